@@ -1,0 +1,34 @@
+#include "core/device/atomic_file.hpp"
+
+#include <unistd.h>
+
+#include <string>
+#include <system_error>
+
+namespace hlr {
+
+void write_atomically(const std::filesystem::path& target,
+                      const std::function<void(const std::filesystem::path&)>& write) {
+  namespace fs = std::filesystem;
+  const fs::path dir = target.has_parent_path() ? target.parent_path() : fs::path(".");
+  std::error_code ec;
+  if (!fs::is_directory(dir, ec))
+    throw DeviceError("cannot write '" + target.string() + "': directory '" + dir.string() + "' does not exist");
+  // Built by appending: GCC 12 warns falsely (-Wrestrict) on "." + std::string.
+  std::string name(1, '.');
+  name.append(target.filename().string()).append(".tmp-").append(std::to_string(static_cast<long>(::getpid())));
+  const fs::path temp = dir / name;
+  try {
+    write(temp);
+  } catch (const std::exception& e) {
+    fs::remove(temp, ec);
+    throw DeviceError("cannot write '" + target.string() + "': " + e.what());
+  }
+  fs::rename(temp, target, ec);
+  if (ec) {
+    fs::remove(temp, ec);
+    throw DeviceError("cannot write '" + target.string() + "': " + ec.message());
+  }
+}
+
+}  // namespace hlr

@@ -1,0 +1,220 @@
+#include "core/hlr/frame_setup.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/hlr/intersection_lines.hpp"
+#include "core/tolerance.hpp"
+
+namespace hlr {
+namespace {
+
+bool is_perspective(const Camera& camera) { return camera.projection == Projection::Perspective; }
+
+double view_extent(const Scene& scene, const Camera& camera) {
+  double extent = 0;
+  for (const SceneObject& object : scene.objects)
+    for (Point3 p : object.solid.vertices) {
+      const Point3 v = camera.view(p);
+      extent = std::max({extent, std::abs(v.x), std::abs(v.y), std::abs(v.z)});
+    }
+  return extent;
+}
+
+// Sutherland–Hodgman against depth ≥ near. For a non-convex ring the result may contain edges doubled
+// along the clip line; containment is even-odd, so they cancel.
+void clip_ring_to_near(const std::vector<Point3>& ring, double near, std::vector<Point3>& out) {
+  out.clear();
+  const std::size_t n = ring.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    const Point3& a = ring[i];
+    const Point3& b = ring[(i + 1) % n];
+    const bool a_in = a.z >= near, b_in = b.z >= near;
+    if (a_in) out.push_back(a);
+    if (a_in != b_in) out.push_back(lerp(a, b, (near - a.z) / (b.z - a.z)));
+  }
+}
+
+// True when every vertex lies in front of the near plane: a closed solid there encloses no part of
+// the eye's neighbourhood, so its back faces are hidden by its front faces.
+bool wholly_in_front(const std::vector<Point3>& view_vertices, const Camera& camera, double tolerance) {
+  if (!is_perspective(camera)) return true;
+  return std::all_of(view_vertices.begin(), view_vertices.end(),
+                     [&](const Point3& v) { return v.z >= camera.near_depth + tolerance; });
+}
+
+void add_occluders(FrameSetup& setup, std::uint32_t object_index, const Solid& solid,
+                   const std::vector<Point3>& view_vertices, const std::vector<std::int8_t>& facing, bool cull,
+                   const Camera& camera) {
+  std::vector<Point3> ring_points, clipped;
+  for (std::size_t f = 0; f < solid.faces.size(); ++f) {
+    if (facing[f] == 0 || (cull && facing[f] < 0)) continue;
+    const Face& face = solid.faces[f];
+    Occluder occ;
+    occ.object = object_index;
+    occ.face = static_cast<FaceIndex>(f);
+    // The view-space plane, from Newell's normal of the outer ring (exact for planar rings).
+    Vector3 normal{};
+    Vector3 centroid{};
+    const auto& outer = face.rings[0].vertices;
+    for (std::size_t i = 0; i < outer.size(); ++i) {
+      const Point3 a = view_vertices[outer[i]], b = view_vertices[outer[(i + 1) % outer.size()]];
+      normal += Vector3{(a.y - b.y) * (a.z + b.z), (a.z - b.z) * (a.x + b.x), (a.x - b.x) * (a.y + b.y)};
+      centroid += to_vector(a);
+    }
+    normal = normalize(normal);
+    centroid = centroid / static_cast<double>(outer.size());
+    occ.normal = normal;
+    occ.offset = -dot(normal, centroid);
+    if (is_perspective(camera)) {
+      occ.eye_side = occ.offset > 0 ? 1.0 : -1.0;
+    } else {
+      occ.eye_side = normal.z < 0 ? 1.0 : -1.0;
+    }
+    occ.first_point = static_cast<std::uint32_t>(setup.polygon_points.size());
+    occ.first_ring = static_cast<std::uint32_t>(setup.ring_ends.size());
+    occ.bounds = Rect2::none();
+    occ.min_depth = 1e300;
+    for (const Ring& ring : face.rings) {
+      ring_points.clear();
+      for (VertexIndex v : ring.vertices) ring_points.push_back(view_vertices[v]);
+      const std::vector<Point3>* pts = &ring_points;
+      if (is_perspective(camera)) {
+        clip_ring_to_near(ring_points, camera.near_depth, clipped);
+        pts = &clipped;
+      }
+      if (pts->size() < 3) continue;
+      for (const Point3& p : *pts) {
+        const Point2 q = camera.project_view(p);
+        setup.polygon_points.push_back(q);
+        occ.bounds.include(q);
+        occ.min_depth = std::min(occ.min_depth, p.z);
+      }
+      setup.ring_ends.push_back(static_cast<std::uint32_t>(setup.polygon_points.size()));
+      ++occ.ring_count;
+    }
+    if (occ.ring_count == 0) continue;
+    setup.occluders.push_back(occ);
+  }
+}
+
+}  // namespace
+
+std::vector<std::int8_t> face_facing(const Solid& solid, const Camera& camera, double length_tolerance) {
+  std::vector<std::int8_t> facing(solid.faces.size(), 0);
+  const bool persp = is_perspective(camera);
+  const Point3 eye = persp ? camera.eye_world() : Point3{};
+  const Vector3 dir = camera.direction_world();
+  for (std::size_t f = 0; f < solid.faces.size(); ++f) {
+    const Vector3 n = solid.planes[f].normal;
+    double s, tol;
+    if (persp) {
+      s = solid.planes[f].signed_distance(eye);
+      tol = length_tolerance;
+    } else {
+      s = -dot(n, dir);
+      tol = Tolerance::kRelative;
+    }
+    facing[f] = s > tol ? 1 : (s < -tol ? -1 : 0);
+  }
+  return facing;
+}
+
+FrameSetup prepare_frame(const Scene& scene, const Camera& camera, bool intersection_lines) {
+  FrameSetup setup;
+  const double extent = view_extent(scene, camera);
+  setup.length_tolerance = Tolerance::for_extent(extent).length;
+  const bool persp = is_perspective(camera);
+
+  std::vector<std::vector<std::int8_t>> facing(scene.objects.size());
+  std::vector<char> cull(scene.objects.size(), 0);
+  std::vector<Point3> view_vertices;
+  for (std::uint32_t o = 0; o < scene.objects.size(); ++o) {
+    const Solid& solid = scene.objects[o].solid;
+    view_vertices.resize(solid.vertices.size());
+    for (std::size_t i = 0; i < solid.vertices.size(); ++i) view_vertices[i] = camera.view(solid.vertices[i]);
+    facing[o] = face_facing(solid, camera, setup.length_tolerance);
+    cull[o] = solid.closed && wholly_in_front(view_vertices, camera, setup.length_tolerance);
+    add_occluders(setup, o, solid, view_vertices, facing[o], cull[o], camera);
+
+    for (std::uint32_t e = 0; e < solid.edges.size(); ++e) {
+      const SolidEdge& edge = solid.edges[e];
+      const int fl = edge.left >= 0 ? facing[o][edge.left] : 0;
+      const int fr = edge.right >= 0 ? facing[o][edge.right] : 0;
+      bool culled = false;
+      switch (edge.kind) {
+        case EdgeKind::Flat:
+          continue;
+        case EdgeKind::Smooth:
+          if ((fl > 0) == (fr > 0)) continue;  // not on the contour
+          [[fallthrough]];
+        case EdgeKind::Feature: {
+          const int front = (fl > 0) + (fr > 0);
+          culled = cull[o] && (front == 0 || (edge.concave && front == 1));
+          break;
+        }
+        case EdgeKind::Marking:
+          culled = cull[o] && fl <= 0;
+          break;
+        case EdgeKind::Boundary:
+        case EdgeKind::Free:
+          break;
+      }
+      Candidate c;
+      c.object = o;
+      c.edge = e;
+      c.own_object0 = c.own_object1 = o;
+      c.own_face0 = edge.left;
+      c.own_face1 = edge.right;
+      c.world0 = solid.vertices[edge.v0];
+      c.world1 = solid.vertices[edge.v1];
+      c.view0 = view_vertices[edge.v0];
+      c.view1 = view_vertices[edge.v1];
+      c.culled = culled;
+      setup.candidates.push_back(c);
+    }
+  }
+  if (intersection_lines) add_intersection_candidates(scene, camera, facing, cull, setup.length_tolerance, setup);
+
+  // Near-plane clipping of the candidates (Desens' ALTER), then projection.
+  std::size_t kept = 0;
+  for (Candidate& c : setup.candidates) {
+    if (persp) {
+      const double near = camera.near_depth;
+      const double z0 = c.view0.z, z1 = c.view1.z;
+      if (z0 < near && z1 < near) continue;
+      if (z0 < near || z1 < near) {
+        const double t = (near - z0) / (z1 - z0);
+        const Point3 w = lerp(c.world0, c.world1, t), v = lerp(c.view0, c.view1, t);
+        if (z0 < near) {
+          c.world0 = w;
+          c.view0 = v;
+          c.view0.z = near;
+        } else {
+          c.world1 = w;
+          c.view1 = v;
+          c.view1.z = near;
+        }
+      }
+    }
+    c.pic0 = camera.project_view(c.view0);
+    c.pic1 = camera.project_view(c.view1);
+    setup.picture_bounds.include(c.pic0);
+    setup.picture_bounds.include(c.pic1);
+    setup.candidates[kept++] = c;
+  }
+  setup.candidates.resize(kept);
+
+  double picture_extent = 0;
+  if (camera.frame) {
+    const Rect2& f = *camera.frame;
+    picture_extent = std::max({std::abs(f.xmin), std::abs(f.xmax), std::abs(f.ymin), std::abs(f.ymax)});
+  } else if (!setup.picture_bounds.empty()) {
+    const Rect2& b = setup.picture_bounds;
+    picture_extent = std::max({std::abs(b.xmin), std::abs(b.xmax), std::abs(b.ymin), std::abs(b.ymax)});
+  }
+  setup.picture_tolerance = Tolerance::for_extent(picture_extent).length;
+  return setup;
+}
+
+}  // namespace hlr

@@ -1,0 +1,62 @@
+// Per-frame preparation: view-space geometry, facing, culling, near-plane clipping and projection.
+// Produces the two lists the engine works on: occluders (faces that can hide) and candidates (edge
+// pieces that may be drawn).
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "core/camera/camera.hpp"
+#include "core/geometry/rect2.hpp"
+#include "core/hlr/scene.hpp"
+#include "core/hlr/visible_segment.hpp"
+
+namespace hlr {
+
+// A face that can hide things, clipped to the near plane and projected.
+struct Occluder {
+  std::uint32_t object = 0;
+  FaceIndex face = kNoFace;
+  // View-space plane n·v + offset = 0 and the sign of the eye's side of it: a view point v is
+  // behind the face when eye_side·(n·v + offset) < 0.
+  Vector3 normal{};
+  double offset = 0;
+  double eye_side = 1;
+  double min_depth = 0;  // nearest view depth of the clipped polygon
+  Rect2 bounds;          // picture bounds of the clipped polygon
+  std::uint32_t first_point = 0;  // into FrameSetup::polygon_points
+  std::uint32_t first_ring = 0;   // into FrameSetup::ring_ends
+  std::uint32_t ring_count = 0;
+};
+
+// An edge piece to examine, already clipped to the near plane: view points a→b, picture points.
+struct Candidate {
+  std::uint32_t object = 0;
+  std::uint32_t edge = 0;
+  std::uint32_t other = 0;
+  SegmentSource source = SegmentSource::Edge;
+  // Faces that must not be tested against this edge (its own faces): (object, face) pairs.
+  std::uint32_t own_object0 = 0, own_object1 = 0;
+  FaceIndex own_face0 = kNoFace, own_face1 = kNoFace;
+  Point3 world0, world1;  // world points of the clipped ends
+  Point3 view0, view1;    // view points of the clipped ends
+  Point2 pic0, pic1;      // picture points of the clipped ends
+  bool culled = false;    // hidden by the back-face rules alone (no occlusion test needed)
+};
+
+struct FrameSetup {
+  std::vector<Occluder> occluders;
+  std::vector<Point2> polygon_points;     // all occluder rings, concatenated
+  std::vector<std::uint32_t> ring_ends;   // end offset (exclusive) of each ring in polygon_points
+  std::vector<Candidate> candidates;
+  double length_tolerance = 0;   // view-space
+  double picture_tolerance = 0;  // picture-space
+  Rect2 picture_bounds = Rect2::none();  // of all candidates
+};
+
+// Per-object facing: +1 front, -1 back, 0 edge-on, for each face.
+std::vector<std::int8_t> face_facing(const Solid& solid, const Camera& camera, double length_tolerance);
+
+FrameSetup prepare_frame(const Scene& scene, const Camera& camera, bool intersection_lines);
+
+}  // namespace hlr

@@ -1,0 +1,18 @@
+// Lines where faces of different solids cross (interpenetrating solids). Each piece strictly inside
+// both faces becomes a candidate edge, examined for visibility like any other.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "core/camera/camera.hpp"
+#include "core/hlr/frame_setup.hpp"
+#include "core/hlr/scene.hpp"
+
+namespace hlr {
+
+void add_intersection_candidates(const Scene& scene, const Camera& camera,
+                                 const std::vector<std::vector<std::int8_t>>& facing, const std::vector<char>& cull,
+                                 double length_tolerance, FrameSetup& setup);
+
+}  // namespace hlr

@@ -1,0 +1,58 @@
+// A union of closed parameter intervals inside [0, 1]: the hidden parts of one edge.
+#pragma once
+
+#include <algorithm>
+#include <vector>
+
+namespace hlr {
+
+struct Interval {
+  double lo = 0, hi = 0;
+};
+
+class IntervalSet {
+ public:
+  void clear() { items_.clear(); }
+  bool empty() const { return items_.empty(); }
+  void add(double lo, double hi) {
+    if (hi <= lo) return;
+    items_.push_back({std::max(lo, 0.0), std::min(hi, 1.0)});
+  }
+  // Sorts and merges overlapping or touching intervals; returns the normalised list.
+  const std::vector<Interval>& normalize() {
+    std::sort(items_.begin(), items_.end(), [](const Interval& a, const Interval& b) { return a.lo < b.lo; });
+    std::size_t out = 0;
+    for (const Interval& iv : items_) {
+      if (out > 0 && iv.lo <= items_[out - 1].hi) {
+        items_[out - 1].hi = std::max(items_[out - 1].hi, iv.hi);
+      } else {
+        items_[out++] = iv;
+      }
+    }
+    items_.resize(out);
+    return items_;
+  }
+  // True when the (normalised) set covers [0, 1] entirely.
+  bool covers_all() {
+    normalize();
+    return items_.size() == 1 && items_[0].lo <= 0 && items_[0].hi >= 1;
+  }
+  // The complement in [lo, hi] of the normalised set.
+  std::vector<Interval> complement(double lo = 0, double hi = 1) {
+    normalize();
+    std::vector<Interval> out;
+    double cursor = lo;
+    for (const Interval& iv : items_) {
+      if (iv.lo > cursor) out.push_back({cursor, std::min(iv.lo, hi)});
+      cursor = std::max(cursor, iv.hi);
+      if (cursor >= hi) break;
+    }
+    if (cursor < hi) out.push_back({cursor, hi});
+    return out;
+  }
+
+ private:
+  std::vector<Interval> items_;
+};
+
+}  // namespace hlr

@@ -1,0 +1,145 @@
+#include "core/hlr/render_frame.hpp"
+
+#include <algorithm>
+#include <atomic>
+#include <optional>
+#include <thread>
+
+#include "core/geometry/clip2d.hpp"
+#include "core/hlr/face_grid.hpp"
+#include "core/hlr/frame_setup.hpp"
+#include "core/hlr/occlusion.hpp"
+
+namespace hlr {
+namespace {
+
+// Restricts a candidate to the part inside the picture frame (Desens' WINDOW); false if none is.
+bool clip_to_frame(Candidate& c, const Camera& camera) {
+  if (!camera.frame) return true;
+  const auto range = clip_segment_to_rect(c.pic0, c.pic1, *camera.frame);
+  if (!range) return false;
+  const auto [s0, s1] = *range;
+  if (s0 <= 0 && s1 >= 1) return true;
+  const double t0 = view_param(c, camera, s0), t1 = view_param(c, camera, s1);
+  const Point3 w0 = lerp(c.world0, c.world1, t0), w1 = lerp(c.world0, c.world1, t1);
+  const Point3 v0 = lerp(c.view0, c.view1, t0), v1 = lerp(c.view0, c.view1, t1);
+  const Point2 p0 = lerp(c.pic0, c.pic1, s0), p1 = lerp(c.pic0, c.pic1, s1);
+  c.world0 = w0;
+  c.world1 = w1;
+  c.view0 = v0;
+  c.view1 = v1;
+  c.pic0 = p0;
+  c.pic1 = p1;
+  return true;
+}
+
+bool is_own_face(const Candidate& c, const Occluder& o) {
+  return (o.object == c.own_object0 && o.face == c.own_face0) || (o.object == c.own_object1 && o.face == c.own_face1);
+}
+
+struct Worker {
+  const FrameSetup& setup;
+  const Camera& camera;
+  const FaceGrid& grid;
+  const HlrOptions& options;
+  std::vector<std::uint32_t> stamp;
+  OcclusionScratch scratch;
+  IntervalSet hidden;
+  std::size_t face_tests = 0;
+
+  void emit(const Candidate& c, double t0, double t1, bool is_hidden, std::vector<VisibleSegment>& out) {
+    const double s0 = picture_param(c, camera, t0), s1 = picture_param(c, camera, t1);
+    VisibleSegment seg;
+    seg.p0 = lerp(c.world0, c.world1, t0);
+    seg.p1 = lerp(c.world0, c.world1, t1);
+    seg.s0 = lerp(c.pic0, c.pic1, s0);
+    seg.s1 = lerp(c.pic0, c.pic1, s1);
+    if (distance(seg.s0, seg.s1) <= setup.picture_tolerance) return;
+    seg.object = c.object;
+    seg.edge = c.edge;
+    seg.other = c.other;
+    seg.source = c.source;
+    seg.hidden = is_hidden;
+    out.push_back(seg);
+  }
+
+  void process(std::uint32_t index, std::vector<VisibleSegment>& out) {
+    const Candidate& c = setup.candidates[index];
+    if (c.culled) {
+      if (options.include_hidden) emit(c, 0, 1, true, out);
+      return;
+    }
+    hidden.clear();
+    const double max_depth = std::max(c.view0.z, c.view1.z);
+    Rect2 box = Rect2::none();
+    box.include(c.pic0);
+    box.include(c.pic1);
+    grid.for_each_near(c.pic0, c.pic1, stamp, index + 1, [&](std::uint32_t id) {
+      const Occluder& o = setup.occluders[id];
+      if (o.min_depth >= max_depth || !o.bounds.overlaps(box) || is_own_face(c, o)) return;
+      ++face_tests;
+      add_hidden_intervals(setup, camera, c, o, scratch, hidden);
+    });
+    for (const Interval& v : hidden.complement()) emit(c, v.lo, v.hi, false, out);
+    if (options.include_hidden)
+      for (const Interval& h : hidden.normalize()) emit(c, h.lo, h.hi, true, out);
+  }
+};
+
+}  // namespace
+
+FrameResult render_frame(const Scene& scene, const Camera& camera, const HlrOptions& options) {
+  FrameSetup setup = prepare_frame(scene, camera, options.intersection_lines);
+
+  // Only what lies inside the picture frame is examined.
+  std::size_t kept = 0;
+  Rect2 domain = Rect2::none();
+  for (Candidate& c : setup.candidates) {
+    if (!clip_to_frame(c, camera)) continue;
+    domain.include(c.pic0);
+    domain.include(c.pic1);
+    setup.candidates[kept++] = c;
+  }
+  setup.candidates.resize(kept);
+
+  FrameResult result;
+  result.stats.candidate_edges = setup.candidates.size();
+  result.stats.occluder_faces = setup.occluders.size();
+  for (const Candidate& c : setup.candidates)
+    if (c.source == SegmentSource::Intersection) ++result.stats.intersection_lines;
+  if (setup.candidates.empty()) return result;
+
+  const FaceGrid grid(setup.occluders, domain);
+
+  // Candidates are split into chunks; each chunk's output is kept apart and joined in order, so the
+  // result does not depend on the number of threads.
+  constexpr std::uint32_t kChunk = 256;
+  const auto n = static_cast<std::uint32_t>(setup.candidates.size());
+  const std::uint32_t chunks = (n + kChunk - 1) / kChunk;
+  std::vector<std::vector<VisibleSegment>> outputs(chunks);
+  unsigned threads = options.threads ? options.threads : std::max(1u, std::thread::hardware_concurrency());
+  threads = std::min<unsigned>(threads, chunks);
+  std::atomic<std::uint32_t> next{0};
+  std::atomic<std::size_t> face_tests{0};
+  auto run = [&] {
+    Worker w{setup, camera, grid, options, std::vector<std::uint32_t>(setup.occluders.size(), 0), {}, {}, 0};
+    for (std::uint32_t k; (k = next.fetch_add(1)) < chunks;) {
+      const std::uint32_t end = std::min(n, (k + 1) * kChunk);
+      for (std::uint32_t i = k * kChunk; i < end; ++i) w.process(i, outputs[k]);
+    }
+    face_tests += w.face_tests;
+  };
+  if (threads <= 1) {
+    run();
+  } else {
+    std::vector<std::jthread> pool;
+    for (unsigned t = 0; t < threads; ++t) pool.emplace_back(run);
+  }
+  for (auto& part : outputs) result.segments.insert(result.segments.end(), part.begin(), part.end());
+  result.stats.face_tests = face_tests;
+  result.stats.visible_segments = static_cast<std::size_t>(
+      std::count_if(result.segments.begin(), result.segments.end(), [](const VisibleSegment& s) { return !s.hidden; }));
+  return result;
+}
+
+}  // namespace hlr

@@ -1,0 +1,22 @@
+// The hidden-line engine: scene + camera in, the exact visible pieces of the drawn edges out.
+//   edges → cull (back faces of closed solids) → near clip → project → spatial index →
+//   hidden intervals (edge behind a face's plane ∩ inside its projected polygon) → visible pieces →
+//   picture-frame clip.
+// Visibility changes only at computed crossing points; nothing is sampled.
+#pragma once
+
+#include "core/camera/camera.hpp"
+#include "core/hlr/scene.hpp"
+#include "core/hlr/visible_segment.hpp"
+
+namespace hlr {
+
+struct HlrOptions {
+  bool include_hidden = false;      // also return hidden pieces (hidden = true), for a dashed layer
+  bool intersection_lines = true;   // draw where faces of different solids cross
+  unsigned threads = 0;             // 0: all hardware threads
+};
+
+FrameResult render_frame(const Scene& scene, const Camera& camera, const HlrOptions& options = {});
+
+}  // namespace hlr

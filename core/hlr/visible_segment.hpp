@@ -1,0 +1,39 @@
+// The engine's output: pieces of edges, each wholly visible (or, on request, wholly hidden).
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "core/geometry/vector.hpp"
+
+namespace hlr {
+
+enum class SegmentSource : std::uint8_t {
+  Edge,          // a piece of SolidEdge `edge` of object `object`
+  Intersection,  // a piece of the line where two solids' faces cross (objects `object` and `other`)
+};
+
+struct VisibleSegment {
+  Point3 p0, p1;  // world-space end points
+  Point2 s0, s1;  // picture coordinates of the camera
+  std::uint32_t object = 0;
+  std::uint32_t edge = 0;   // index into the object's Solid::edges (Edge source)
+  std::uint32_t other = 0;  // second object (Intersection source)
+  SegmentSource source = SegmentSource::Edge;
+  bool hidden = false;
+};
+
+struct FrameStats {
+  std::size_t candidate_edges = 0;     // edges examined after culling and clipping
+  std::size_t occluder_faces = 0;      // faces that can hide something
+  std::size_t face_tests = 0;          // edge-face pairs examined after the spatial index
+  std::size_t intersection_lines = 0;  // pieces of solid-solid intersection lines
+  std::size_t visible_segments = 0;
+};
+
+struct FrameResult {
+  std::vector<VisibleSegment> segments;
+  FrameStats stats;
+};
+
+}  // namespace hlr

@@ -1,0 +1,74 @@
+#include "core/solid/solid.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <utility>
+
+#include "core/solid/face_geometry.hpp"
+
+namespace hlr {
+
+Vector3 newell_normal(const std::vector<Point3>& vertices, const Ring& ring) {
+  const std::vector<VertexIndex>& r = ring.vertices;
+  if (r.size() < 3) return {};
+  // Newell's sums over coordinates relative to the first vertex: the same vector, without the
+  // cancellation that large absolute coordinates would cause.
+  const Point3 o = vertices[r[0]];
+  Vector3 n{};
+  for (std::size_t i = 0; i < r.size(); ++i) {
+    const Vector3 a = vertices[r[i]] - o, b = vertices[r[(i + 1) % r.size()]] - o;
+    n.x += (a.y - b.y) * (a.z + b.z);
+    n.y += (a.z - b.z) * (a.x + b.x);
+    n.z += (a.x - b.x) * (a.y + b.y);
+  }
+  return n;
+}
+
+Solid Solid::transformed(const Affine3& worldFromObject) const {
+  const double det = worldFromObject.determinant();
+  if (det == 0 || !std::isfinite(det)) throw std::domain_error("transform is singular: it would flatten the solid");
+
+  Solid out;
+  out.closed = closed;
+  out.crease_angle_deg = crease_angle_deg;
+  out.vertices.reserve(vertices.size());
+  for (const Point3& p : vertices) out.vertices.push_back(worldFromObject.apply(p));
+
+  // A mirror reverses every ring as seen from outside: reverse them back so outer rings stay
+  // counter-clockwise and normals outward, and swap the sides of the edges to match.
+  const bool mirror = det < 0;
+  out.faces = faces;
+  if (mirror)
+    for (Face& f : out.faces)
+      for (Ring& r : f.rings) std::reverse(r.vertices.begin(), r.vertices.end());
+
+  out.planes.reserve(out.faces.size());
+  for (const Face& f : out.faces)
+    out.planes.push_back(f.rings.empty() ? Plane{} : solid_detail::newell_plane(out.vertices, f.rings[0]));
+
+  out.edges = edges;
+  for (SolidEdge& e : out.edges) {
+    if (mirror && e.left != e.right) {
+      // Two faces: swap sides. One face (boundary): keep it on the left by reversing the edge instead.
+      if (e.right == kNoFace)
+        std::swap(e.v0, e.v1);
+      else
+        std::swap(e.left, e.right);
+    }
+    // Coplanarity and concavity survive any affine map; dihedral angles do not (non-uniform scaling),
+    // so re-decide Smooth against Feature with the new planes. Flat stays Flat: those faces were judged
+    // coplanar in object space, and a stretch must not make rounding noise visible.
+    if (e.kind == EdgeKind::Feature || e.kind == EdgeKind::Smooth) {
+      const Vector3 dir = out.vertices[e.v1] - out.vertices[e.v0];
+      e.kind = solid_detail::classify_dihedral(dir, out.planes[e.left].normal, out.planes[e.right].normal,
+                                               crease_angle_deg)
+                   .kind;
+      // Squashed nearly flat by an extreme stretch, but not coplanar: below any positive crease angle.
+      if (e.kind == EdgeKind::Flat) e.kind = crease_angle_deg > 0 ? EdgeKind::Smooth : EdgeKind::Feature;
+    }
+  }
+  return out;
+}
+
+}  // namespace hlr

@@ -1,0 +1,73 @@
+// A polyhedral solid after validation: vertices, planar faces (with holes), the edge table with face
+// adjacency, marking lines and free lines. Build one with SolidBuilder (solid_builder.hpp), which checks
+// the input and reports precise diagnostics; the engine relies on the invariants stated here.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "core/geometry/affine3.hpp"
+#include "core/geometry/vector.hpp"
+
+namespace hlr {
+
+using VertexIndex = std::uint32_t;
+using FaceIndex = std::int32_t;  // -1 where there is no face
+inline constexpr FaceIndex kNoFace = -1;
+
+// A closed loop of vertex indices (the closing edge back to the first vertex is implied).
+struct Ring {
+  std::vector<VertexIndex> vertices;
+};
+
+// A planar polygon. rings[0] is the outer boundary, counter-clockwise seen from outside (from the side
+// the normal points to); rings[1..] are holes, clockwise seen from outside. Containment is even-odd over
+// all rings, so a hole touching the outer ring at one vertex is fine.
+struct Face {
+  std::vector<Ring> rings;
+};
+
+// Plane n·p + d = 0 with unit outward normal n.
+struct Plane {
+  Vector3 normal{};
+  double offset = 0;
+  double signed_distance(Point3 p) const { return dot(normal, to_vector(p)) + offset; }
+};
+
+enum class EdgeKind : std::uint8_t {
+  Feature,   // between two faces at a dihedral angle above the crease angle: always a candidate
+  Smooth,    // between two non-coplanar faces below the crease angle: drawn only on the contour
+  Flat,      // between two coplanar faces: never drawn
+  Boundary,  // on exactly one face (open surface): always a candidate
+  Marking,   // a line lying on a face: drawn where visible, hides nothing
+  Free,      // a line on no face: drawn where visible, hides nothing
+};
+
+// An undirected edge. For edges between two faces, `left` is the face that traverses v0→v1 (the edge
+// has that face on its left seen from outside) and `right` the face that traverses v1→v0.
+struct SolidEdge {
+  VertexIndex v0 = 0, v1 = 0;
+  FaceIndex left = kNoFace, right = kNoFace;
+  EdgeKind kind = EdgeKind::Feature;
+  bool concave = false;  // dihedral angle measured outside the solid below 180° (Pfister's c > 0)
+};
+
+struct Solid {
+  std::vector<Point3> vertices;
+  std::vector<Face> faces;
+  std::vector<Plane> planes;      // one per face, outward
+  std::vector<SolidEdge> edges;   // each shared edge exactly once; markings and free lines too
+  // Every boundary edge has exactly two faces traversing it in opposite directions: the surface encloses
+  // a volume, so back faces may be culled while the solid lies wholly in front of the eye.
+  bool closed = false;
+  double crease_angle_deg = 0;  // the crease angle the edge kinds were classified with
+
+  // This solid moved by `worldFromObject` (any invertible affine map; a mirror keeps faces outward).
+  Solid transformed(const Affine3& worldFromObject) const;
+};
+
+// Newell's normal of a ring (length = twice the area; direction by the right-hand rule).
+Vector3 newell_normal(const std::vector<Point3>& vertices, const Ring& ring);
+
+}  // namespace hlr

@@ -1,0 +1,22 @@
+# Runs `hlrscript --demo -o OUT` and checks with poppler that the PDF has the expected pages and size.
+file(REMOVE ${OUT})
+execute_process(COMMAND ${HLRSCRIPT} --demo -o ${OUT} --frames 4 RESULT_VARIABLE rc OUTPUT_VARIABLE out
+                ERROR_VARIABLE err)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "hlrscript --demo failed (${rc}): ${out} ${err}")
+endif()
+execute_process(COMMAND pdfinfo ${OUT} RESULT_VARIABLE rc OUTPUT_VARIABLE info)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "pdfinfo cannot read ${OUT}")
+endif()
+if(NOT info MATCHES "Pages: +5\n")
+  message(FATAL_ERROR "expected 5 pages (overview + 4 approach frames):\n${info}")
+endif()
+if(NOT info MATCHES "Page size: +841.89 x 595.276 pts")
+  message(FATAL_ERROR "expected an A4 landscape page:\n${info}")
+endif()
+# A bad output directory is an error with exit status 73 and leaves nothing behind.
+execute_process(COMMAND ${HLRSCRIPT} --demo -o /nonexistent-dir/x.pdf RESULT_VARIABLE rc ERROR_VARIABLE err)
+if(NOT rc EQUAL 73 OR NOT err MATCHES "does not exist")
+  message(FATAL_ERROR "unwritable output: expected exit 73 and a clear message, got ${rc}: ${err}")
+endif()
