@@ -88,8 +88,8 @@ const std::vector<std::vector<int>> kCarrierFaces = {
 };
 
 Solid build(const NodeCard* nodes, std::size_t node_count, const std::vector<std::vector<int>>& faces,
-            const char* name) {
-  SolidBuilder builder;
+            const char* name, const SolidBuildOptions& options = {}) {
+  SolidBuilder builder(options);
   for (std::size_t i = 0; i < node_count; ++i) builder.add_vertex(std::to_string(nodes[i].id), nodes[i].position);
   for (const auto& loop : faces) {
     std::vector<std::string> ids;
@@ -112,7 +112,13 @@ Solid desens_lblock() {
 }
 
 Solid desens_carrier() {
-  return build(kCarrierNodes, std::size(kCarrierNodes), kCarrierFaces, "carrier");
+  // The thesis's carrier is legacy data: the bow faces 14 and 15 of the hull are warped by 1.07 ft over
+  // 400 ft (2.7e-3 of their size) and face 17's hull outline pokes past the deck slab's starboard notch.
+  // The 1969 program never checked either; we accept both with warnings, as the thesis drew it.
+  SolidBuildOptions options;
+  options.planarity_tolerance = 3e-3;
+  options.allow_crossing_holes = true;
+  return build(kCarrierNodes, std::size(kCarrierNodes), kCarrierFaces, "carrier", options);
 }
 
 }  // namespace hlr::stdlib

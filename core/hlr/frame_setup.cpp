@@ -120,7 +120,7 @@ std::vector<std::int8_t> face_facing(const Solid& solid, const Camera& camera, d
   return facing;
 }
 
-FrameSetup prepare_frame(const Scene& scene, const Camera& camera, bool intersection_lines) {
+FrameSetup prepare_frame(const Scene& scene, const Camera& camera, bool intersection_lines, bool keep_culled) {
   FrameSetup setup;
   const double extent = view_extent(scene, camera);
   setup.length_tolerance = Tolerance::for_extent(extent).length;
@@ -160,6 +160,7 @@ FrameSetup prepare_frame(const Scene& scene, const Camera& camera, bool intersec
         case EdgeKind::Free:
           break;
       }
+      if (culled && !keep_culled) continue;
       Candidate c;
       c.object = o;
       c.edge = e;

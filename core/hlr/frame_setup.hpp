@@ -57,6 +57,7 @@ struct FrameSetup {
 // Per-object facing: +1 front, -1 back, 0 edge-on, for each face.
 std::vector<std::int8_t> face_facing(const Solid& solid, const Camera& camera, double length_tolerance);
 
-FrameSetup prepare_frame(const Scene& scene, const Camera& camera, bool intersection_lines);
+// Culled candidates (hidden by the back-face rules alone) are kept only when `keep_culled` is set.
+FrameSetup prepare_frame(const Scene& scene, const Camera& camera, bool intersection_lines, bool keep_culled);
 
 }  // namespace hlr

@@ -118,9 +118,19 @@ void add_intersection_candidates(const Scene& scene, const Camera& camera,
   std::vector<double> breaks;
   std::vector<Interval> in_a, in_b;
   std::uint32_t piece_index = 0;
-  for (std::size_t i = 0; i < n; ++i) {
-    for (std::size_t j = i + 1; j < n; ++j) {
-      if (!boxes[i].overlaps(boxes[j], tol)) continue;
+  // Broad phase: sweep the objects' boxes along x, so cities of many separate solids stay near-linear.
+  std::vector<std::size_t> order(n);
+  for (std::size_t o = 0; o < n; ++o) order[o] = o;
+  std::stable_sort(order.begin(), order.end(),
+                   [&](std::size_t a, std::size_t b) { return boxes[a].lo.x < boxes[b].lo.x; });
+  std::vector<std::pair<std::size_t, std::size_t>> pairs;
+  for (std::size_t a = 0; a < n; ++a)
+    for (std::size_t b = a + 1; b < n && boxes[order[b]].lo.x <= boxes[order[a]].hi.x + tol; ++b)
+      if (boxes[order[a]].overlaps(boxes[order[b]], tol))
+        pairs.emplace_back(std::min(order[a], order[b]), std::max(order[a], order[b]));
+  std::sort(pairs.begin(), pairs.end());
+  for (const auto& [i, j] : pairs) {
+    {
       const Solid& si = scene.objects[i].solid;
       const Solid& sj = scene.objects[j].solid;
       const std::vector<FaceRef> fa = faces_of(i, boxes[j]), fb = faces_of(j, boxes[i]);

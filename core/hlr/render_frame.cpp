@@ -89,7 +89,7 @@ struct Worker {
 }  // namespace
 
 FrameResult render_frame(const Scene& scene, const Camera& camera, const HlrOptions& options) {
-  FrameSetup setup = prepare_frame(scene, camera, options.intersection_lines);
+  FrameSetup setup = prepare_frame(scene, camera, options.intersection_lines, options.include_hidden);
 
   // Only what lies inside the picture frame is examined.
   std::size_t kept = 0;

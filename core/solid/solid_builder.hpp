@@ -2,9 +2,12 @@
 // Checks (codes in brackets): unknown vertex [unknown-vertex], face with fewer than 3 distinct vertices
 // [too-few-vertices], non-planar face with its deviation [non-planar], zero-area face [zero-area],
 // duplicate vertex id or two ids at the same position [duplicate-vertex], NaN/inf coordinates
-// [non-finite], an edge used by more than two faces [non-manifold-edge], inconsistent winding
-// (faces reoriented, with a warning) [reoriented], a hole outside its face or crossing it [bad-hole].
-// Errors make build() return no solid; warnings do not.
+// [non-finite], an edge used by more than two faces or twice by one [non-manifold-edge], inconsistent
+// winding (faces reoriented, with a warning) [reoriented], a surface that cannot be oriented (Möbius)
+// [non-orientable], a hole outside its face or crossing it [bad-hole]; warnings for a vertex repeated
+// in a row (dropped) [repeated-vertex] and a line from a vertex to itself (dropped) [degenerate-line].
+// Messages name faces by their 1-based position in input order ("face 3"), lines likewise ("line 2"),
+// vertices by id. Errors make build() return no solid; warnings do not.
 #pragma once
 
 #include <cstdint>
@@ -13,6 +16,7 @@
 #include <vector>
 
 #include "core/solid/solid.hpp"
+#include "core/tolerance.hpp"
 
 namespace hlr {
 
@@ -30,6 +34,15 @@ struct SolidBuildOptions {
   double crease_angle_deg = 0;
   // Reorient faces whose winding disagrees with their neighbours (warning) instead of failing.
   bool fix_winding = true;
+  // A face is planar when every vertex lies within planarity_tolerance × (face size) of its plane
+  // (face size = diagonal of its bounding box). Raise it only for legacy data known to be warped:
+  // Desens' carrier hull (faces 13–16) deviates by up to 2.7e-3. Faces beyond Tolerance::kPlanarity
+  // but within this are accepted with a [non-planar] warning.
+  double planarity_tolerance = Tolerance::kPlanarity;
+  // Accept holes that cross or leave their face's outer ring (or cross each other) with a [bad-hole]
+  // warning instead of an error; the face is then the even-odd region of its rings. For legacy data:
+  // in Desens' carrier, face 17's hull outline pokes out past the deck slab's starboard notch.
+  bool allow_crossing_holes = false;
 };
 
 struct SolidBuildResult {
@@ -64,8 +77,8 @@ class SolidBuilder {
     std::int64_t tag;
   };
   struct FaceInput {
-    std::vector<std::vector<std::string>> rings;  // outer first
-    std::vector<std::pair<std::string, std::string>> lines;  // on-face lines from add_face_loop
+    std::vector<std::vector<std::string>> rings;  // outer first, or the single loop of add_face_loop
+    bool from_loop;                               // split into rings and on-face lines by build()
     std::int64_t tag;
   };
   struct LineInput {
