@@ -266,21 +266,22 @@ PreparedFace prepare_face(const std::vector<std::vector<std::string>>& input_rin
     }
   }
   const double allowed = options.planarity_tolerance * face.size;
-  const std::string deviation =
-      name + " is not planar: vertex " + vertices.ids[worst_vertex] + " lies " + format_number(worst) + " off the plane of the others";
-  if (worst > allowed) {
-    diagnostics.error("non-planar",
-                      deviation + " (tolerance " + format_number(options.planarity_tolerance) +
-                          " × face size); split it into planar faces",
-                      tag);
-    return face;
-  }
-  if (worst > Tolerance::kPlanarity * face.size)
+  if (worst > Tolerance::kPlanarity * face.size) {  // messages are built only when needed
+    const std::string deviation = name + " is not planar: vertex " + vertices.ids[worst_vertex] + " lies " +
+                                  format_number(worst) + " off the plane of the others";
+    if (worst > allowed) {
+      diagnostics.error("non-planar",
+                        deviation + " (tolerance " + format_number(options.planarity_tolerance) +
+                            " × face size); split it into planar faces",
+                        tag);
+      return face;
+    }
     diagnostics.warning("non-planar",
                         deviation + " (more than " + format_number(Tolerance::kPlanarity) +
                             " × face size, accepted by the planarity tolerance " +
                             format_number(options.planarity_tolerance) + "); drawings may be slightly off near it",
                         tag);
+  }
 
   // Holes: each inside the outer ring, no two rings crossing; orientation by nesting depth.
   if (rings.size() > 1) {

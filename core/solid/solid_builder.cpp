@@ -55,11 +55,11 @@ VertexTable resolve_vertices(const auto& inputs, Diagnostics& diagnostics) {
       for (int k = 0; k < 3; ++k) extent = std::max(extent, std::abs(table.positions[i][k]));
   table.tolerance = Tolerance::for_extent(extent);
 
-  // Coincident positions: hash into cells of the tolerance's size (coordinates are at most 1e9 cells
-  // from the origin) and compare with the 27 cells around each point.
-  const double tol = table.tolerance.length;
+  // Coincident positions: hash into cubic cells of twice the tolerance. A point then has neighbours
+  // within the tolerance only in its own cell and, per axis, the adjacent cell on the side of the
+  // nearer cell border: 8 cells to look in. Coordinates are at most 1e9 tolerances from the origin.
+  const double tol = table.tolerance.length, cell = 2 * tol;
   const std::size_t n = table.positions.size();
-  auto cell_of = [&](double c) { return static_cast<std::int64_t>(std::floor(c / tol)); };
   auto key_of = [](std::int64_t x, std::int64_t y, std::int64_t z) {
     std::uint64_t h = static_cast<std::uint64_t>(x) * 0x9E3779B97F4A7C15ull;
     h ^= static_cast<std::uint64_t>(y) * 0xC2B2AE3D27D4EB4Full + (h << 6) + (h >> 2);
@@ -67,20 +67,25 @@ VertexTable resolve_vertices(const auto& inputs, Diagnostics& diagnostics) {
     return h;
   };
   std::unordered_map<std::uint64_t, std::vector<std::size_t>> cells;
+  cells.reserve(n);
   std::vector<std::size_t> twin(n, n);  // earliest vertex at the same position
   for (std::size_t i = 0; i < n; ++i) {
     if (!table.usable[i]) continue;
     const Point3 p = table.positions[i];
-    const std::int64_t cx = cell_of(p.x), cy = cell_of(p.y), cz = cell_of(p.z);
-    for (std::int64_t dx = -1; dx <= 1; ++dx)
-      for (std::int64_t dy = -1; dy <= 1; ++dy)
-        for (std::int64_t dz = -1; dz <= 1; ++dz) {
-          const auto it = cells.find(key_of(cx + dx, cy + dy, cz + dz));
-          if (it == cells.end()) continue;
-          for (std::size_t j : it->second)  // hash collisions only add candidates
-            if (j < twin[i] && distance(p, table.positions[j]) <= tol) twin[i] = j;
-        }
-    cells[key_of(cx, cy, cz)].push_back(i);
+    std::int64_t c[3], side[3];
+    for (int k = 0; k < 3; ++k) {
+      const double f = std::floor(p[k] / cell);
+      c[k] = static_cast<std::int64_t>(f);
+      side[k] = p[k] / cell - f < 0.5 ? -1 : 1;
+    }
+    for (int corner = 0; corner < 8; ++corner) {
+      const auto it = cells.find(key_of(c[0] + (corner & 1 ? side[0] : 0), c[1] + (corner & 2 ? side[1] : 0),
+                                        c[2] + (corner & 4 ? side[2] : 0)));
+      if (it == cells.end()) continue;
+      for (std::size_t j : it->second)  // hash collisions only add candidates
+        if (j < twin[i] && distance(p, table.positions[j]) <= tol) twin[i] = j;
+    }
+    cells[key_of(c[0], c[1], c[2])].push_back(i);
   }
   for (std::size_t i = 0; i < twin.size(); ++i)
     if (twin[i] < table.positions.size())

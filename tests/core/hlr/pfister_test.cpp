@@ -462,7 +462,9 @@ std::set<std::uint32_t> expect_subset_of_pfister(const Solid& solid, const Camer
     const SolidEdge& e = solid.edges[i];
     if (e.left < 0 || e.right < 0 || !is_concave(solid, e)) continue;
     const int on = facing.on_view[static_cast<std::size_t>(e.left)] + facing.on_view[static_cast<std::size_t>(e.right)];
-    if (on < 2) EXPECT_FALSE(drawn.count(i)) << label << ": concave edge " << i << " drawn with " << on << " face(s) on view";
+    if (on < 2) {
+      EXPECT_FALSE(drawn.count(i)) << label << ": concave edge " << i << " drawn with " << on << " face(s) on view";
+    }
   }
   return drawn;
 }

@@ -60,7 +60,7 @@ TEST(SolidBuilder, InsideOutCubeIsTurnedOutwardWithAWarningPerFace) {
   ASSERT_EQ(warnings.size(), 6u) << all_messages(r);
   for (int f = 0; f < 6; ++f) {
     EXPECT_EQ(warnings[static_cast<std::size_t>(f)]->message,
-              "face " + std::to_string(f + 1) +
+              id("face ", f + 1) +
                   " was wound clockwise seen from outside, like every face of its solid (the solid was inside out); "
                   "reversed it");
     EXPECT_EQ(warnings[static_cast<std::size_t>(f)]->tag, 200 + f);
@@ -146,16 +146,16 @@ SolidBuilder cylinder(int sides, double crease) {
   std::vector<std::string> bottom, top;
   for (int i = 0; i < sides; ++i) {
     const double a = 2 * std::numbers::pi * i / sides;
-    b.add_vertex("b" + std::to_string(i), {std::cos(a), std::sin(a), 0});
-    b.add_vertex("t" + std::to_string(i), {std::cos(a), std::sin(a), 2});
-    bottom.insert(bottom.begin(), "b" + std::to_string(i));
-    top.push_back("t" + std::to_string(i));
+    b.add_vertex(id("b", i), {std::cos(a), std::sin(a), 0});
+    b.add_vertex(id("t", i), {std::cos(a), std::sin(a), 2});
+    bottom.insert(bottom.begin(), id("b", i));
+    top.push_back(id("t", i));
   }
   b.add_face(bottom);
   b.add_face(top);
   for (int i = 0; i < sides; ++i) {
     const int j = (i + 1) % sides;
-    b.add_face({"b" + std::to_string(i), "b" + std::to_string(j), "t" + std::to_string(j), "t" + std::to_string(i)});
+    b.add_face({id("b", i), id("b", j), id("t", j), id("t", i)});
   }
   return b;
 }
@@ -197,8 +197,8 @@ SolidBuilder plate_with_hole(bool top_as_loop) {
   const double outer[4][2] = {{0, 0}, {4, 0}, {4, 4}, {0, 4}}, hole[4][2] = {{1, 1}, {3, 1}, {3, 3}, {1, 3}};
   for (const char* level : {"b", "t"}) {
     const double z = level[0] == 't' ? 1 : 0;
-    for (int i = 0; i < 4; ++i) b.add_vertex(std::string(level) + "o" + std::to_string(i), {outer[i][0], outer[i][1], z});
-    for (int i = 0; i < 4; ++i) b.add_vertex(std::string(level) + "h" + std::to_string(i), {hole[i][0], hole[i][1], z});
+    for (int i = 0; i < 4; ++i) b.add_vertex(std::string(level) + id("o", i), {outer[i][0], outer[i][1], z});
+    for (int i = 0; i < 4; ++i) b.add_vertex(std::string(level) + id("h", i), {hole[i][0], hole[i][1], z});
   }
   if (top_as_loop)  // Desens' style: one loop, the hole reached by the doubled bridge to0–th0
     b.add_face_loop({"to0", "to1", "to2", "to3", "to0", "th0", "th3", "th2", "th1", "th0"}, 1);
@@ -386,7 +386,7 @@ TEST(SolidBuilder, RandomLoopsNeverBreakTheContract) {
     const SolidBuildResult r = b.build();
     accepted += r.ok() && !r.solid->faces.empty();
     if (r.ok()) {
-      SCOPED_TRACE("seed " + std::to_string(seed));
+      SCOPED_TRACE(id("seed ", seed));
       expect_valid_solid(*r.solid);
     } else {
       EXPECT_FALSE(r.diagnostics.empty()) << "seed " << seed;

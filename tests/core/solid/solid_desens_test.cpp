@@ -95,7 +95,7 @@ TEST(SolidDesens, CarrierIsRejectedByTheStrictChecks) {
   ASSERT_EQ(warped.size(), 4u) << all_messages(r);
   for (std::size_t i = 0; i < 4; ++i) {
     EXPECT_EQ(warped[i]->tag, static_cast<std::int64_t>(13 + i));
-    EXPECT_EQ(warped[i]->message.rfind("face " + std::to_string(13 + i) + " is not planar: vertex ", 0), 0u);
+    EXPECT_EQ(warped[i]->message.rfind(id("face ", 13 + i) + " is not planar: vertex ", 0), 0u);
   }
   EXPECT_NE(warped[1]->message.find(" lies 1.07248 off the plane"), std::string::npos) << warped[1]->message;
   ASSERT_EQ(holes.size(), 1u) << all_messages(r);
@@ -136,7 +136,7 @@ TEST(SolidDesens, Carrier) {
   const std::vector<std::pair<int, std::vector<VertexIndex>>> holes = {
       {1, {21, 22, 23, 24}}, {17, {47, 46, 44, 45, 48}}, {18, {38, 35, 28, 27}}};
   for (const auto& [face, nodes] : holes) {
-    SCOPED_TRACE("face " + std::to_string(face));
+    SCOPED_TRACE(id("face ", face));
     const Face& f = s.faces[static_cast<std::size_t>(face - 1)];
     ASSERT_EQ(f.rings.size(), 2u);
     std::vector<VertexIndex> hole = f.rings[1].vertices;

@@ -95,7 +95,7 @@ TEST(SolidDiagnostics, NonPlanarFaceReportsItsDeviation) {
   const Point3 p[5] = {{0, 0, 0}, {2, 0, 0}, {2, 2, 0}, {1, 3, 0.25}, {0, 2, 0}};
   std::vector<std::string> ids;
   for (int i = 0; i < 5; ++i) {
-    ids.push_back("p" + std::to_string(i));
+    ids.push_back(id("p", i));
     b.add_vertex(ids.back(), p[i]);
   }
   b.add_face(ids, {}, 14);
@@ -142,7 +142,7 @@ TEST(SolidDiagnostics, LoosenedPlanarityAcceptsWithAWarning) {
 TEST(SolidDiagnostics, ZeroArea) {
   SolidBuilder b = square();
   b.add_vertex("m", {0.5, 0, 0});
-  for (int i = 1; i <= 3; ++i) b.add_vertex("h" + std::to_string(i), {0.2 * i, 0.2 * i, 0});
+  for (int i = 1; i <= 3; ++i) b.add_vertex(id("h", i), {0.2 * i, 0.2 * i, 0});
   b.add_face({"a", "m", "b"}, {}, 16);                          // collinear
   b.add_face_loop({"a", "b", "c", "b"}, 17);                   // every edge doubled
   b.add_face({"a", "b", "c", "d"}, {{"h1", "h2", "h3"}}, 18);  // flat hole
@@ -238,12 +238,12 @@ TEST(SolidDiagnostics, MoebiusBandCannotBeOriented) {
 TEST(SolidDiagnostics, BadHoles) {
   SolidBuilder b;
   const double outer[4][2] = {{0, 0}, {10, 0}, {10, 10}, {0, 10}};
-  for (int i = 0; i < 4; ++i) b.add_vertex("o" + std::to_string(i), {outer[i][0], outer[i][1], 0});
+  for (int i = 0; i < 4; ++i) b.add_vertex(id("o", i), {outer[i][0], outer[i][1], 0});
   auto square_at = [&](const std::string& name, double x, double y, double size) {
     std::vector<std::string> ids;
     const double c[4][2] = {{x, y}, {x + size, y}, {x + size, y + size}, {x, y + size}};
     for (int i = 0; i < 4; ++i) {
-      ids.push_back(name + std::to_string(i));
+      ids.push_back(id(name, i));
       b.add_vertex(ids.back(), {c[i][0], c[i][1], 0});
     }
     return ids;

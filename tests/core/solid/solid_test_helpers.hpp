@@ -17,6 +17,13 @@
 
 namespace hlr::solid_test {
 
+// prefix + number, built in place (GCC 12 warns falsely, -Wrestrict, on "text" + std::to_string(i)).
+inline std::string id(const std::string& prefix, long number) {
+  std::string s = prefix;
+  s += std::to_string(number);
+  return s;
+}
+
 // Unit cube [0,1]³, vertices "1".."8"; faces in the order bottom, top, front (y=0), back, left (x=0),
 // right, each counter-clockwise seen from outside unless listed in `clockwise` (0-based face numbers).
 inline SolidBuilder unit_cube(std::set<int> clockwise = {}, SolidBuildOptions options = {}) {

@@ -98,10 +98,10 @@ TEST(SolidTransform, StretchReclassifiesSmoothAgainstFeature) {
   const int n = 16;
   for (int i = 0; i < n; ++i) {
     const double a = 2 * std::numbers::pi * i / n;
-    b.add_vertex("b" + std::to_string(i), {std::cos(a), std::sin(a), 0});
-    b.add_vertex("t" + std::to_string(i), {std::cos(a), std::sin(a), 1});
-    bottom.insert(bottom.begin(), "b" + std::to_string(i));
-    top.push_back("t" + std::to_string(i));
+    b.add_vertex(id("b", i), {std::cos(a), std::sin(a), 0});
+    b.add_vertex(id("t", i), {std::cos(a), std::sin(a), 1});
+    bottom.insert(bottom.begin(), id("b", i));
+    top.push_back(id("t", i));
   }
   b.add_face(bottom);
   b.add_face(top);

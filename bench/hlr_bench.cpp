@@ -1,0 +1,71 @@
+// render_frame() on generated scenes from 10^2 to 10^6 faces: box cities, tessellated spheres and tori,
+// the bumpy closed triangle mesh. Counters: faces, visible segments, candidate edges, edge–face tests,
+// faces per second, and the process's peak RSS (VmHWM — cumulative over the run, so per-scene peaks
+// come from memory_bench, which renders one scene per process). See bench/README.md.
+//   hlr_bench --benchmark_filter='city' --benchmark_min_time=0.1
+// HLR_BENCH_THREADS=n sets the engine's threads (default 1, for per-core numbers; 0 = all cores).
+#include <benchmark/benchmark.h>
+
+#include <cstdlib>
+#include <map>
+#include <memory>
+#include <string>
+#include <utility>
+
+#include "bench/bench_scenes.hpp"
+#include "core/hlr/render_frame.hpp"
+
+namespace {
+
+using hlr::bench::BenchScene;
+
+// Building a 10^6-face scene takes seconds, and the benchmark function runs several times while the
+// library sizes its iterations: keep the last scene.
+const BenchScene& scene(const std::string& kind, std::size_t faces) {
+  static std::pair<std::string, std::unique_ptr<BenchScene>> cache;
+  const std::string key = kind + "/" + std::to_string(faces);
+  if (cache.first != key) {
+    cache.second.reset();  // free the previous scene first: peak memory stays one scene
+    cache = {key, std::make_unique<BenchScene>(hlr::bench::make_scene(kind, faces))};
+  }
+  return *cache.second;
+}
+
+unsigned engine_threads() {
+  const char* t = std::getenv("HLR_BENCH_THREADS");
+  return t ? static_cast<unsigned>(std::strtoul(t, nullptr, 10)) : 1u;
+}
+
+void render(benchmark::State& state, const char* kind) {
+  const BenchScene& s = scene(kind, static_cast<std::size_t>(state.range(0)));
+  hlr::HlrOptions options;
+  options.threads = engine_threads();
+  hlr::FrameResult result;
+  for (auto _ : state) {
+    result = hlr::render_frame(s.scene, s.camera, options);
+    benchmark::DoNotOptimize(result.segments.data());
+  }
+  state.SetLabel(s.detail);
+  state.counters["faces"] = static_cast<double>(s.faces);
+  state.counters["segments"] = static_cast<double>(result.stats.visible_segments);
+  state.counters["candidates"] = static_cast<double>(result.stats.candidate_edges);
+  state.counters["face_tests"] = static_cast<double>(result.stats.face_tests);
+  state.counters["faces_per_s"] =
+      benchmark::Counter(static_cast<double>(s.faces), benchmark::Counter::kIsIterationInvariantRate);
+  state.counters["peak_rss_MB"] = static_cast<double>(hlr::bench::peak_rss_bytes()) / (1 << 20);
+}
+
+void BM_City(benchmark::State& state) { render(state, "city"); }
+void BM_Sphere(benchmark::State& state) { render(state, "sphere"); }
+void BM_Torus(benchmark::State& state) { render(state, "torus"); }
+void BM_ClosedMesh(benchmark::State& state) { render(state, "mesh"); }
+
+// Sizes are approximate face counts.
+BENCHMARK(BM_City)->Arg(100)->Arg(1000)->Arg(10000)->Arg(100000)->Arg(1000000)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_Sphere)->Arg(100)->Arg(10000)->Arg(1000000)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_Torus)->Arg(100)->Arg(10000)->Arg(1000000)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_ClosedMesh)->Arg(10000)->Arg(100000)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+}  // namespace
+
+BENCHMARK_MAIN();
