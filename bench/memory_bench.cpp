@@ -63,6 +63,7 @@ namespace {
 void print_header() {
   std::printf("| scene | generator | faces | build s | render s | segments | scene heap MB | render peak heap MB | "
               "render bytes/face | process VmHWM MB |\n|---|---|---:|---:|---:|---:|---:|---:|---:|---:|\n");
+  std::fflush(stdout);  // before the children write their rows
 }
 
 int run_one(const std::string& kind, std::size_t faces) {

@@ -175,7 +175,7 @@ FrameSetup prepare_frame(const Scene& scene, const Camera& camera, bool intersec
       setup.candidates.push_back(c);
     }
   }
-  if (intersection_lines) add_intersection_candidates(scene, camera, facing, cull, setup.length_tolerance, setup);
+  if (intersection_lines) add_intersection_candidates(scene, camera, facing, cull, setup.length_tolerance, keep_culled, setup);
 
   // Near-plane clipping of the candidates (Desens' ALTER), then projection.
   std::size_t kept = 0;

@@ -90,7 +90,7 @@ void inside_intervals(const Solid& solid, FaceIndex f, const Plane& other_plane,
 
 void add_intersection_candidates(const Scene& scene, const Camera& camera,
                                  const std::vector<std::vector<std::int8_t>>& facing, const std::vector<char>& cull,
-                                 double tol, FrameSetup& setup) {
+                                 double tol, bool keep_culled, FrameSetup& setup) {
   const std::size_t n = scene.objects.size();
   std::vector<Box3> boxes(n);
   for (std::size_t o = 0; o < n; ++o)
@@ -101,12 +101,12 @@ void add_intersection_candidates(const Scene& scene, const Camera& camera,
     Box3 box;
   };
   // A face of a closed solid that faces away lies behind the solid's own front faces: the intersection
-  // lines on it are hidden, so they are not computed.
+  // lines on it are hidden.
+  auto culled_face = [&](std::size_t o, FaceIndex f) { return cull[o] && facing[o][f] <= 0; };
   auto faces_of = [&](std::size_t o, const Box3& clip) {
     std::vector<FaceRef> refs;
     const Solid& s = scene.objects[o].solid;
     for (std::size_t f = 0; f < s.faces.size(); ++f) {
-      if (cull[o] && facing[o][f] <= 0) continue;
       const Box3 b = face_box(s, s.faces[f]);
       if (b.overlaps(clip, tol)) refs.push_back({static_cast<FaceIndex>(f), b});
     }
@@ -157,6 +157,13 @@ void add_intersection_candidates(const Scene& scene, const Camera& camera,
             for (const Interval& y : in_b) {
               const double lo = std::max(x.lo, y.lo), hi = std::min(x.hi, y.hi);
               if (hi - lo <= tol) continue;
+              // Pieces are numbered whether or not they are kept, so a piece has the same number with
+              // and without the hidden layer.
+              const bool culled = culled_face(i, a.face) || culled_face(j, b.face);
+              if (culled && !keep_culled) {
+                ++piece_index;
+                continue;
+              }
               Candidate c;
               c.source = SegmentSource::Intersection;
               c.object = static_cast<std::uint32_t>(i);
@@ -170,6 +177,7 @@ void add_intersection_candidates(const Scene& scene, const Camera& camera,
               c.world1 = origin + hi * dir;
               c.view0 = camera.view(c.world0);
               c.view1 = camera.view(c.world1);
+              c.culled = culled;
               setup.candidates.push_back(c);
             }
         }

@@ -1,5 +1,6 @@
 // Lines where faces of different solids cross (interpenetrating solids). Each piece strictly inside
-// both faces becomes a candidate edge, examined for visibility like any other.
+// both faces becomes a candidate edge, examined for visibility like any other. Lines on a back face of a
+// closed solid are hidden by the solid itself: they are made only when `keep_culled` asks for them.
 #pragma once
 
 #include <cstdint>
@@ -13,6 +14,6 @@ namespace hlr {
 
 void add_intersection_candidates(const Scene& scene, const Camera& camera,
                                  const std::vector<std::vector<std::int8_t>>& facing, const std::vector<char>& cull,
-                                 double length_tolerance, FrameSetup& setup);
+                                 double length_tolerance, bool keep_culled, FrameSetup& setup);
 
 }  // namespace hlr

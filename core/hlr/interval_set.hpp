@@ -32,6 +32,21 @@ class IntervalSet {
     items_.resize(out);
     return items_;
   }
+  // Normalises, then also joins neighbours whose gap is negligible: gap_is_small(hi, next_lo) decides.
+  template <typename GapIsSmall>
+  const std::vector<Interval>& close_gaps(GapIsSmall&& gap_is_small) {
+    normalize();
+    std::size_t out = 0;
+    for (std::size_t i = 0; i < items_.size(); ++i) {
+      if (out > 0 && gap_is_small(items_[out - 1].hi, items_[i].lo)) {
+        items_[out - 1].hi = std::max(items_[out - 1].hi, items_[i].hi);
+      } else {
+        items_[out++] = items_[i];
+      }
+    }
+    items_.resize(out);
+    return items_;
+  }
   // True when the (normalised) set covers [0, 1] entirely.
   bool covers_all() {
     normalize();

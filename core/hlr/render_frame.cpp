@@ -47,6 +47,10 @@ struct Worker {
   IntervalSet hidden;
   std::size_t face_tests = 0;
 
+  Point2 picture_point(const Candidate& c, double t) const {
+    return lerp(c.pic0, c.pic1, picture_param(c, camera, t));
+  }
+
   void emit(const Candidate& c, double t0, double t1, bool is_hidden, std::vector<VisibleSegment>& out) {
     const double s0 = picture_param(c, camera, t0), s1 = picture_param(c, camera, t1);
     VisibleSegment seg;
@@ -79,6 +83,11 @@ struct Worker {
       if (o.min_depth >= max_depth || !o.bounds.overlaps(box) || is_own_face(c, o)) return;
       ++face_tests;
       add_hidden_intervals(setup, camera, c, o, scratch, hidden);
+    });
+    // Hidden runs that meet up to rounding (across a shared face edge) are one run: the sliver between
+    // them is not a visible piece.
+    hidden.close_gaps([&](double hi, double lo) {
+      return distance(picture_point(c, hi), picture_point(c, lo)) <= setup.picture_tolerance;
     });
     for (const Interval& v : hidden.complement()) emit(c, v.lo, v.hi, false, out);
     if (options.include_hidden)

@@ -8,9 +8,10 @@
 #include <cmath>
 #include <cstdint>
 #include <map>
-#include <tuple>
 #include <sstream>
 #include <string>
+#include <tuple>
+#include <utility>
 #include <vector>
 
 #include "core/camera/lookat_camera.hpp"
@@ -62,7 +63,8 @@ Camera ortho(Point3 eye, Point3 target, Vector3 up = {0, 0, 1}, double height = 
 
 Scene scene_of(const std::vector<Solid>& solids) {
   Scene scene;
-  for (std::size_t i = 0; i < solids.size(); ++i) scene.objects.push_back({"object" + std::to_string(i), solids[i]});
+  for (std::size_t i = 0; i < solids.size(); ++i)
+    scene.objects.push_back({"object" + std::to_string(i), solids[i]});
   return scene;
 }
 
@@ -72,7 +74,8 @@ void expect_sane(const FrameResult& r, const Camera& camera, const std::string& 
   std::size_t visible = 0;
   for (const VisibleSegment& s : r.segments) {
     EXPECT_TRUE(is_finite(s.p0) && is_finite(s.p1)) << label << ": non-finite world point " << str(s);
-    EXPECT_TRUE(std::isfinite(s.s0.x) && std::isfinite(s.s0.y) && std::isfinite(s.s1.x) && std::isfinite(s.s1.y))
+    EXPECT_TRUE(std::isfinite(s.s0.x) && std::isfinite(s.s0.y) && std::isfinite(s.s1.x) &&
+                std::isfinite(s.s1.y))
         << label << ": non-finite picture point " << str(s);
     for (const auto& [p, q] : {std::pair{s.p0, s.s0}, std::pair{s.p1, s.s1}}) {
       const Point2 want = camera.project(p);
@@ -92,11 +95,13 @@ struct Expected {
 };
 
 bool same_ends(const VisibleSegment& s, Point3 a, Point3 b, double tol) {
-  return (distance(s.p0, a) <= tol && distance(s.p1, b) <= tol) || (distance(s.p0, b) <= tol && distance(s.p1, a) <= tol);
+  return (distance(s.p0, a) <= tol && distance(s.p1, b) <= tol) ||
+         (distance(s.p0, b) <= tol && distance(s.p1, a) <= tol);
 }
 
 // The result must consist of exactly the expected segments (any order, either direction).
-void expect_segments(const FrameResult& r, const std::vector<Expected>& expected, double tol, const std::string& label) {
+void expect_segments(const FrameResult& r, const std::vector<Expected>& expected, double tol,
+                     const std::string& label) {
   std::vector<bool> used(r.segments.size(), false);
   bool ok = true;
   for (const Expected& e : expected) {
@@ -107,7 +112,8 @@ void expect_segments(const FrameResult& r, const std::vector<Expected>& expected
       if (same_ends(s, e.a, e.b, tol)) found = used[i] = true;
     }
     if (!found) {
-      ADD_FAILURE() << label << ": missing segment of object " << e.object << " " << str(e.a) << "–" << str(e.b);
+      ADD_FAILURE() << label << ": missing segment of object " << e.object << " " << str(e.a) << "–"
+                    << str(e.b);
       ok = false;
     }
   }
@@ -136,10 +142,11 @@ std::vector<Expected> join(std::vector<Expected> a, const std::vector<Expected>&
 std::vector<Expected> nine_edges(std::uint32_t o, Point3 lo, Point3 hi) {
   const double x0 = lo.x, y0 = lo.y, z0 = lo.z, x1 = hi.x, y1 = hi.y, z1 = hi.z;
   return {
-      {o, {x0, y0, z1}, {x1, y0, z1}}, {o, {x1, y0, z1}, {x1, y1, z1}}, {o, {x1, y1, z1}, {x0, y1, z1}},
-      {o, {x0, y1, z1}, {x0, y0, z1}},  // top
+      {o, {x0, y0, z1}, {x1, y0, z1}}, {o, {x1, y0, z1}, {x1, y1, z1}},
+      {o, {x1, y1, z1}, {x0, y1, z1}}, {o, {x0, y1, z1}, {x0, y0, z1}},  // top
       {o, {x0, y0, z0}, {x1, y0, z0}}, {o, {x1, y0, z0}, {x1, y1, z0}},  // bottom of y0 and x1
-      {o, {x0, y0, z0}, {x0, y0, z1}}, {o, {x1, y0, z0}, {x1, y0, z1}}, {o, {x1, y1, z0}, {x1, y1, z1}},  // verticals
+      {o, {x0, y0, z0}, {x0, y0, z1}}, {o, {x1, y0, z0}, {x1, y0, z1}},
+      {o, {x1, y1, z0}, {x1, y1, z1}},  // verticals
   };
 }
 
@@ -192,6 +199,24 @@ TEST(DegenerateEye, InThePlaneOfATopFace) {
       EXPECT_NEAR(cross(b - a, s.s0 - a), 0, 1e-12);
       EXPECT_NEAR(cross(b - a, s.s1 - a), 0, 1e-12);
     }
+}
+
+// The same eye with a tall box B = [−3, −2] × [0.25, 0.75] × [0, 2] behind the cube. The ray from the eye
+// (3, 0.5, 1) to a point (−2, y, z) crosses the plane x = 1 at height 1 + 0.4·(z − 1), inside the cube's
+// x = 1 face exactly for z < 1: B's front verticals are cut exactly at the height of the eye's plane (the
+// edge-on top face hides nothing), its bottom front edge is hidden, its top front edge is whole.
+TEST(DegenerateEye, InThePlaneOfATopFaceOccluderCutsAtTheHorizon) {
+  const Scene scene =
+      scene_of({stdlib::box({0, 0, 0}, {1, 1, 1}), stdlib::box({-3, 0.25, 0}, {-2, 0.75, 2})});
+  const Camera cam = lookat({3, 0.5, 1}, {0.5, 0.5, 0.5});
+  const FrameResult r = render_frame(scene, cam);
+  expect_sane(r, cam, "horizon cut");
+  expect_segments(
+      r,
+      join(loop(0, {{1, 0, 0}, {1, 1, 0}, {1, 1, 1}, {1, 0, 1}}), {{1, {-2, 0.25, 2}, {-2, 0.75, 2}},
+                                                                   {1, {-2, 0.25, 1}, {-2, 0.25, 2}},
+                                                                   {1, {-2, 0.75, 1}, {-2, 0.75, 2}}}),
+      1e-12, "horizon cut");
 }
 
 // ---- edge-on faces --------------------------------------------------------------------------------------
@@ -248,13 +273,15 @@ TEST(DegenerateCoincident, TwoIdenticalBoxes) {
 // intersection lines.
 TEST(DegenerateCoincident, StackedBoxesSharingAFace) {
   const Scene scene = scene_of({stdlib::box({0, 0, 0}, {1, 1, 1}), stdlib::box({0, 0, 1}, {1, 1, 2})});
-  for (const Camera& cam : {lookat({3.3, -2.1, 5.2}, {0.5, 0.5, 1}), ortho({3.3, -2.1, 5.2}, {0.5, 0.5, 1})}) {
+  for (const Camera& cam :
+       {lookat({3.3, -2.1, 5.2}, {0.5, 0.5, 1}), ortho({3.3, -2.1, 5.2}, {0.5, 0.5, 1})}) {
     const std::string label = "stacked " + cam.kind;
     const FrameResult r = render_frame(scene, cam);
     expect_sane(r, cam, label);
     std::vector<Expected> lower;
     for (const Expected& e : nine_edges(0, {0, 0, 0}, {1, 1, 1})) {
-      const bool far_top = e.a.z == 1 && e.b.z == 1 && ((e.a.x == 0 && e.b.x == 0) || (e.a.y == 1 && e.b.y == 1));
+      const bool far_top =
+          e.a.z == 1 && e.b.z == 1 && ((e.a.x == 0 && e.b.x == 0) || (e.a.y == 1 && e.b.y == 1));
       if (!far_top) lower.push_back(e);
     }
     ASSERT_EQ(lower.size(), 7u);
@@ -307,7 +334,8 @@ TEST(DegenerateInside, ObliqueEyeInsideSeesEveryEdgeBeyondTheNearPlane) {
 // ---- nothing in front -----------------------------------------------------------------------------------
 
 TEST(DegenerateBehind, EverythingBehindTheEyeDrawsNothing) {
-  const Scene scene = scene_of({stdlib::box({-10, -1, -1}, {-5, 1, 1}), free_lines({{{-3, 0, 0}, {-1, 2, 1}}})});
+  const Scene scene =
+      scene_of({stdlib::box({-10, -1, -1}, {-5, 1, 1}), free_lines({{{-3, 0, 0}, {-1, 2, 1}}})});
   const Camera cam = lookat({0, 0, 0}, {1, 0, 0});
   HlrOptions opt;
   opt.include_hidden = true;
@@ -492,7 +520,8 @@ std::vector<VisibleSegment> visible_only(const FrameResult& r) {
 
 // Total hidden world length per (source, object, edge): the hidden layer's extent, independent of how it
 // is split into pieces.
-std::map<std::tuple<int, std::uint32_t, std::uint32_t>, double> hidden_lengths(const FrameResult& r, double scale) {
+std::map<std::tuple<int, std::uint32_t, std::uint32_t>, double> hidden_lengths(const FrameResult& r,
+                                                                               double scale) {
   std::map<std::tuple<int, std::uint32_t, std::uint32_t>, double> out;
   for (const VisibleSegment& s : r.segments)
     if (s.hidden) out[{static_cast<int>(s.source), s.object, s.edge}] += distance(s.p0, s.p1) / scale;
@@ -501,8 +530,8 @@ std::map<std::tuple<int, std::uint32_t, std::uint32_t>, double> hidden_lengths(c
 
 // The visible segments must be the same (same edges, same pieces, same order) with the same picture
 // coordinates and world points mapped by `map`; the hidden layer must cover the same length of each edge.
-void expect_same_topology(const FrameResult& ref_all, const FrameResult& got_all, const Affine3& map, double scale,
-                          double world_tol, double picture_tol, const std::string& label) {
+void expect_same_topology(const FrameResult& ref_all, const FrameResult& got_all, const Affine3& map,
+                          double scale, double world_tol, double picture_tol, const std::string& label) {
   const std::vector<VisibleSegment> ref = visible_only(ref_all), got = visible_only(got_all);
   ASSERT_EQ(ref.size(), got.size()) << label << ": reference" << dump(ref_all) << "\ngot" << dump(got_all);
   for (std::size_t i = 0; i < ref.size(); ++i) {
@@ -522,8 +551,8 @@ void expect_same_topology(const FrameResult& ref_all, const FrameResult& got_all
     const auto it = hg.find(key);
     ASSERT_TRUE(it != hg.end()) << label << ": edge " << std::get<2>(key) << " of object " << std::get<1>(key)
                                 << " lost its hidden part";
-    EXPECT_NEAR(it->second, len, 1e-7) << label << ": hidden length of edge " << std::get<2>(key) << " of object "
-                                       << std::get<1>(key);
+    EXPECT_NEAR(it->second, len, 1e-7)
+        << label << ": hidden length of edge " << std::get<2>(key) << " of object " << std::get<1>(key);
   }
 }
 

@@ -66,14 +66,16 @@ Camera ortho(Point3 eye, Point3 target, Vector3 up = {0, 0, 1}, double height = 
 
 Scene scene_of(const std::vector<Solid>& solids) {
   Scene scene;
-  for (std::size_t i = 0; i < solids.size(); ++i) scene.objects.push_back({"object" + std::to_string(i), solids[i]});
+  for (std::size_t i = 0; i < solids.size(); ++i)
+    scene.objects.push_back({"object" + std::to_string(i), solids[i]});
   return scene;
 }
 
 void expect_sane(const FrameResult& r, const Camera& camera, const std::string& label) {
   for (const VisibleSegment& s : r.segments) {
     EXPECT_TRUE(is_finite(s.p0) && is_finite(s.p1)) << label << ": " << str(s);
-    EXPECT_TRUE(std::isfinite(s.s0.x) && std::isfinite(s.s0.y) && std::isfinite(s.s1.x) && std::isfinite(s.s1.y))
+    EXPECT_TRUE(std::isfinite(s.s0.x) && std::isfinite(s.s0.y) && std::isfinite(s.s1.x) &&
+                std::isfinite(s.s1.y))
         << label << ": " << str(s);
     for (const auto& [p, q] : {std::pair{s.p0, s.s0}, std::pair{s.p1, s.s1}}) {
       const Point2 want = camera.project(p);
@@ -91,10 +93,12 @@ struct Expected {
 };
 
 bool same_ends(const VisibleSegment& s, Point3 a, Point3 b, double tol) {
-  return (distance(s.p0, a) <= tol && distance(s.p1, b) <= tol) || (distance(s.p0, b) <= tol && distance(s.p1, a) <= tol);
+  return (distance(s.p0, a) <= tol && distance(s.p1, b) <= tol) ||
+         (distance(s.p0, b) <= tol && distance(s.p1, a) <= tol);
 }
 
-void expect_segments(const FrameResult& r, const std::vector<Expected>& expected, double tol, const std::string& label) {
+void expect_segments(const FrameResult& r, const std::vector<Expected>& expected, double tol,
+                     const std::string& label) {
   std::vector<bool> used(r.segments.size(), false);
   bool ok = true;
   for (const Expected& e : expected) {
@@ -105,8 +109,9 @@ void expect_segments(const FrameResult& r, const std::vector<Expected>& expected
       if (same_ends(s, e.a, e.b, tol)) found = used[i] = true;
     }
     if (!found) {
-      ADD_FAILURE() << label << ": missing " << (e.source == SegmentSource::Edge ? "edge piece" : "intersection")
-                    << " of object " << e.object << " " << str(e.a) << "–" << str(e.b);
+      ADD_FAILURE() << label << ": missing "
+                    << (e.source == SegmentSource::Edge ? "edge piece" : "intersection") << " of object "
+                    << e.object << " " << str(e.a) << "–" << str(e.b);
       ok = false;
     }
   }
@@ -241,7 +246,8 @@ TEST(EngineCasesSilhouette, SmallBoxInFrontPerspective) {
 // end there: hidden for |x|/13 < 1/10, i.e. cut at x = ±1.3, where they meet A's vertical edges in the
 // picture (T-junctions).
 TEST(EngineCasesTJunction, BarEdgesEndOnTheOccludingEdge) {
-  const Scene scene = scene_of({stdlib::box({-1, 0, -1}, {1, 1, 1}), stdlib::box({-3, 3, -0.2}, {3, 4, 0.2})});
+  const Scene scene =
+      scene_of({stdlib::box({-1, 0, -1}, {1, 1, 1}), stdlib::box({-3, 3, -0.2}, {3, 4, 0.2})});
   const Camera cam = lookat({0, -10, 0}, {0, 0, 0});
   const FrameResult r = render_frame(scene, cam);
   expect_sane(r, cam, "T-junction");
@@ -269,8 +275,8 @@ TEST(EngineCasesTJunction, BarEdgesEndOnTheOccludingEdge) {
 // ---- an edge seen through a hole ----------------------------------------------------------------------
 
 Solid plate_with_square_hole() {
-  return stdlib::prism({{-2, -2}, {2, -2}, {2, 2}, {-2, 2}}, {{{-0.5, -0.5}, {0.5, -0.5}, {0.5, 0.5}, {-0.5, 0.5}}}, 0,
-                       0.2);
+  return stdlib::prism({{-2, -2}, {2, -2}, {2, 2}, {-2, 2}},
+                       {{{-0.5, -0.5}, {0.5, -0.5}, {0.5, 0.5}, {-0.5, 0.5}}}, 0, 0.2);
 }
 
 // Orthographic from above (picture = (x, y)): the plate [−2, 2]² × [0, 0.2] with the hole [−0.5, 0.5]²; a bar
@@ -281,8 +287,9 @@ TEST(EngineCasesHole, EdgeBehindAPlateIsVisibleThroughTheHoleOrtho) {
   const Camera cam = ortho({0, 0, 10}, {0, 0, 0}, {0, 1, 0}, 8);
   const FrameResult r = render_frame(scene, cam);
   expect_sane(r, cam, "hole ortho");
-  std::vector<Expected> want = join(loop(0, {{-2, -2, 0.2}, {2, -2, 0.2}, {2, 2, 0.2}, {-2, 2, 0.2}}),
-                                    loop(0, {{-0.5, -0.5, 0.2}, {0.5, -0.5, 0.2}, {0.5, 0.5, 0.2}, {-0.5, 0.5, 0.2}}));
+  std::vector<Expected> want =
+      join(loop(0, {{-2, -2, 0.2}, {2, -2, 0.2}, {2, 2, 0.2}, {-2, 2, 0.2}}),
+           loop(0, {{-0.5, -0.5, 0.2}, {0.5, -0.5, 0.2}, {0.5, 0.5, 0.2}, {-0.5, 0.5, 0.2}}));
   want.push_back({1, {-3, -0.1, -0.8}, {-3, 0.1, -0.8}});
   want.push_back({1, {3, -0.1, -0.8}, {3, 0.1, -0.8}});
   for (double y : {-0.1, 0.1}) {
@@ -303,10 +310,12 @@ TEST(EngineCasesHole, EdgeBehindAPlateIsVisibleThroughTheHolePerspective) {
   const Camera cam = lookat({0, 0, 10}, {0, 0, 0}, {0, 1, 0});
   const FrameResult r = render_frame(scene, cam);
   expect_sane(r, cam, "hole perspective");
-  const std::vector<Point3> rim_top = {{-0.5, -0.5, 0.2}, {0.5, -0.5, 0.2}, {0.5, 0.5, 0.2}, {-0.5, 0.5, 0.2}};
+  const std::vector<Point3> rim_top = {
+      {-0.5, -0.5, 0.2}, {0.5, -0.5, 0.2}, {0.5, 0.5, 0.2}, {-0.5, 0.5, 0.2}};
   const std::vector<Point3> rim_bottom = {{-0.5, -0.5, 0}, {0.5, -0.5, 0}, {0.5, 0.5, 0}, {-0.5, 0.5, 0}};
-  std::vector<Expected> want = join(join(loop(0, {{-2, -2, 0.2}, {2, -2, 0.2}, {2, 2, 0.2}, {-2, 2, 0.2}}), loop(0, rim_top)),
-                                    loop(0, rim_bottom));
+  std::vector<Expected> want =
+      join(join(loop(0, {{-2, -2, 0.2}, {2, -2, 0.2}, {2, 2, 0.2}, {-2, 2, 0.2}}), loop(0, rim_top)),
+           loop(0, rim_bottom));
   for (std::size_t i = 0; i < 4; ++i) want.push_back({0, rim_bottom[i], rim_top[i]});
   const double outer = 108.0 / 49.0;
   want.push_back({1, {-3, -0.1, -0.8}, {-3, 0.1, -0.8}});
@@ -321,9 +330,9 @@ TEST(EngineCasesHole, EdgeBehindAPlateIsVisibleThroughTheHolePerspective) {
 
 // ---- interpenetrating boxes ----------------------------------------------------------------------------
 
-// A = [−4, 4]² × [0, 2]; P = [−0.5, 0.5] × [−1, 1] × [1, 3] pokes out of A's top. Its side faces cross the top
-// along the rectangle x = ±0.5, y = ±1, z = 2. From an eye at (+x, −y, +z) P's faces x = 0.5 and y = −1 are
-// on view: two intersection segments, whole. P's three kept vertical edges are cut where they enter A
+// A = [−4, 4]² × [0, 2]; P = [−0.5, 0.5] × [−1, 1] × [1, 3] pokes out of A's top. Its side faces cross the
+// top along the rectangle x = ±0.5, y = ±1, z = 2. From an eye at (+x, −y, +z) P's faces x = 0.5 and y = −1
+// are on view: two intersection segments, whole. P's three kept vertical edges are cut where they enter A
 // (visible z ∈ [2, 3]), its top edges are whole, its bottom edges hidden; A's nine edges are whole (P's
 // shadow on the plane z = 2 stays inside [−1.7, 1.7]², clear of A's rim). The opposite eye sees the other two
 // sides; together the four sides of the rectangle.
@@ -338,10 +347,16 @@ TEST(EngineCasesIntersection, BoxPokingThroughATop) {
     std::vector<Expected> lines;
   };
   const std::vector<View> views = {
-      {{10, -8, 12}, 1, -1, {{0, {0.5, -1, 2}, {0.5, 1, 2}, SegmentSource::Intersection},
-                             {0, {-0.5, -1, 2}, {0.5, -1, 2}, SegmentSource::Intersection}}},
-      {{-10, 8, 12}, -1, 1, {{0, {-0.5, -1, 2}, {-0.5, 1, 2}, SegmentSource::Intersection},
-                             {0, {-0.5, 1, 2}, {0.5, 1, 2}, SegmentSource::Intersection}}},
+      {{10, -8, 12},
+       1,
+       -1,
+       {{0, {0.5, -1, 2}, {0.5, 1, 2}, SegmentSource::Intersection},
+        {0, {-0.5, -1, 2}, {0.5, -1, 2}, SegmentSource::Intersection}}},
+      {{-10, 8, 12},
+       -1,
+       1,
+       {{0, {-0.5, -1, 2}, {-0.5, 1, 2}, SegmentSource::Intersection},
+        {0, {-0.5, 1, 2}, {0.5, 1, 2}, SegmentSource::Intersection}}},
   };
   for (const View& v : views) {
     for (const Camera& cam : {lookat(v.eye, {0, 0, 1}), ortho(v.eye, {0, 0, 1}, {0, 0, 1}, 12)}) {
@@ -358,7 +373,8 @@ TEST(EngineCasesIntersection, BoxPokingThroughATop) {
         if (s.source != SegmentSource::Intersection) continue;
         EXPECT_EQ(s.object, 0u) << label;
         EXPECT_EQ(s.other, 1u) << label;
-        auto a = std::pair{std::round(s.p0.x * 2), std::round(s.p0.y)}, b = std::pair{std::round(s.p1.x * 2), std::round(s.p1.y)};
+        auto a = std::pair{std::round(s.p0.x * 2), std::round(s.p0.y)},
+             b = std::pair{std::round(s.p1.x * 2), std::round(s.p1.y)};
         if (b < a) std::swap(a, b);
         sides_seen.insert({a, b});
       }
@@ -382,7 +398,8 @@ TEST(EngineCasesIntersection, IncludeHiddenReturnsTheHiddenIntersectionLines) {
     expect_sane(r, cam, "poke hidden " + cam.kind);
     EXPECT_NEAR(total_length(r, 0, SegmentSource::Intersection, false), 3, 1e-12) << cam.kind;
     EXPECT_NEAR(total_length(r, 0, SegmentSource::Intersection, true), 3, 1e-12)
-        << cam.kind << ": the sides x = −0.5 and y = 1 of the intersection rectangle are missing from the hidden "
+        << cam.kind
+        << ": the sides x = −0.5 and y = 1 of the intersection rectangle are missing from the hidden "
         << "layer" << dump(r);
   }
 }
@@ -408,8 +425,9 @@ TEST(EngineCasesMarking, MarkingIsDrawnWithItsFaceAndHiddenWithIt) {
     const Camera cam = ortho({0.5, 0.5, 10}, {0.5, 0.5, 0}, {0, 1, 0}, 2);
     const FrameResult r = render_frame(scene, cam);
     expect_sane(r, cam, "marking from above");
-    std::vector<Expected> want = join(loop(0, {{0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}}),
-                                      loop(1, {{0.4, 0.4, 1.3}, {0.6, 0.4, 1.3}, {0.6, 0.6, 1.3}, {0.4, 0.6, 1.3}}));
+    std::vector<Expected> want =
+        join(loop(0, {{0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}}),
+             loop(1, {{0.4, 0.4, 1.3}, {0.6, 0.4, 1.3}, {0.6, 0.6, 1.3}, {0.4, 0.6, 1.3}}));
     want.push_back({0, {0.25, 0.25, 1}, {0.4, 0.4, 1}});
     want.push_back({0, {0.6, 0.6, 1}, {0.75, 0.75, 1}});
     want.push_back({0, {0.75, 0.25, 1}, {0.6, 0.4, 1}});
@@ -451,19 +469,24 @@ struct Case {
 
 std::vector<Case> occlusion_cases() {
   std::vector<Case> cases;
-  cases.push_back({"T-junction", {stdlib::box({-1, 0, -1}, {1, 1, 1}), stdlib::box({-3, 3, -0.2}, {3, 4, 0.2})},
+  cases.push_back({"T-junction",
+                   {stdlib::box({-1, 0, -1}, {1, 1, 1}), stdlib::box({-3, 3, -0.2}, {3, 4, 0.2})},
                    lookat({0, -10, 0}, {0, 0, 0})});
-  cases.push_back({"hole", {plate_with_square_hole(), stdlib::box({-3, -0.1, -1}, {3, 0.1, -0.8})},
+  cases.push_back({"hole",
+                   {plate_with_square_hole(), stdlib::box({-3, -0.1, -1}, {3, 0.1, -0.8})},
                    lookat({0.7, -1.3, 10}, {0, 0, 0}, {0, 1, 0})});
-  cases.push_back({"poke", {stdlib::box(kALo, kAHi), stdlib::box(kPLo, kPHi)}, lookat({10, -8, 12}, {0, 0, 1})});
-  cases.push_back({"mixed",
-                   {stdlib::box({0, 0, 0}, {1, 1, 1}), stdlib::box({-0.5, 2, -0.25}, {1.5, 3, 0.75}),
-                    stdlib::l_block({1.5, -1, 0}, {2, 1, 2}, 1, 1), stdlib::sphere({3, 2, 0.5}, 0.6, 8, 5, 0)},
-                   lookat({5, -6, 4}, {0.8, 0.8, 0.5})});
-  cases.push_back({"mixed ortho",
-                   {stdlib::box({0, 0, 0}, {1, 1, 1}), stdlib::box({-0.5, 2, -0.25}, {1.5, 3, 0.75}),
-                    stdlib::l_block({1.5, -1, 0}, {2, 1, 2}, 1, 1), stdlib::sphere({3, 2, 0.5}, 0.6, 8, 5, 0)},
-                   ortho({5, -6, 4}, {0.8, 0.8, 0.5}, {0, 0, 1}, 6)});
+  cases.push_back(
+      {"poke", {stdlib::box(kALo, kAHi), stdlib::box(kPLo, kPHi)}, lookat({10, -8, 12}, {0, 0, 1})});
+  cases.push_back(
+      {"mixed",
+       {stdlib::box({0, 0, 0}, {1, 1, 1}), stdlib::box({-0.5, 2, -0.25}, {1.5, 3, 0.75}),
+        stdlib::l_block({1.5, -1, 0}, {2, 1, 2}, 1, 1), stdlib::sphere({3, 2, 0.5}, 0.6, 8, 5, 0)},
+       lookat({5, -6, 4}, {0.8, 0.8, 0.5})});
+  cases.push_back(
+      {"mixed ortho",
+       {stdlib::box({0, 0, 0}, {1, 1, 1}), stdlib::box({-0.5, 2, -0.25}, {1.5, 3, 0.75}),
+        stdlib::l_block({1.5, -1, 0}, {2, 1, 2}, 1, 1), stdlib::sphere({3, 2, 0.5}, 0.6, 8, 5, 0)},
+       ortho({5, -6, 4}, {0.8, 0.8, 0.5}, {0, 0, 1}, 6)});
   return cases;
 }
 
@@ -474,7 +497,7 @@ struct Piece {
 
 // Pieces of every Edge-source edge, as parameter intervals along v0 → v1, sorted.
 std::map<std::pair<std::uint32_t, std::uint32_t>, std::vector<Piece>> pieces_by_edge(const Scene& scene,
-                                                                                    const FrameResult& r) {
+                                                                                     const FrameResult& r) {
   std::map<std::pair<std::uint32_t, std::uint32_t>, std::vector<Piece>> out;
   for (const VisibleSegment& s : r.segments) {
     if (s.source != SegmentSource::Edge) continue;
@@ -486,7 +509,8 @@ std::map<std::pair<std::uint32_t, std::uint32_t>, std::vector<Piece>> pieces_by_
     if (t1 < t0) std::swap(t0, t1);
     out[{s.object, s.edge}].push_back({t0, t1, s.hidden});
   }
-  for (auto& [key, v] : out) std::sort(v.begin(), v.end(), [](const Piece& x, const Piece& y) { return x.t0 < y.t0; });
+  for (auto& [key, v] : out)
+    std::sort(v.begin(), v.end(), [](const Piece& x, const Piece& y) { return x.t0 < y.t0; });
   return out;
 }
 
@@ -513,7 +537,8 @@ TEST(EngineCasesHidden, HiddenPiecesComplementTheVisibleOnes) {
     ASSERT_EQ(vis_of_all.size(), visible.segments.size()) << c.name;
     for (std::size_t i = 0; i < vis_of_all.size(); ++i) {
       EXPECT_TRUE(vis_of_all[i].p0 == visible.segments[i].p0 && vis_of_all[i].p1 == visible.segments[i].p1 &&
-                  vis_of_all[i].edge == visible.segments[i].edge && vis_of_all[i].object == visible.segments[i].object)
+                  vis_of_all[i].edge == visible.segments[i].edge &&
+                  vis_of_all[i].object == visible.segments[i].object)
           << c.name << " #" << i << ": " << str(vis_of_all[i]) << " vs " << str(visible.segments[i]);
     }
     EXPECT_EQ(all.stats.visible_segments, visible.stats.visible_segments) << c.name;
@@ -561,9 +586,9 @@ TEST(EngineCasesHidden, VisibleAndHiddenPiecesAlternate) {
     for (const auto& [key, v] : pieces_by_edge(scene, all))
       for (std::size_t i = 1; i < v.size(); ++i)
         EXPECT_NE(v[i].hidden, v[i - 1].hidden)
-            << c.name << " object " << key.first << " edge " << key.second << ": two " << (v[i].hidden ? "hidden" : "visible")
-            << " pieces meet at t = " << v[i].t0 << " (pieces [" << v[i - 1].t0 << ", " << v[i - 1].t1 << "] and ["
-            << v[i].t0 << ", " << v[i].t1 << "])";
+            << c.name << " object " << key.first << " edge " << key.second << ": two "
+            << (v[i].hidden ? "hidden" : "visible") << " pieces meet at t = " << v[i].t0 << " (pieces ["
+            << v[i - 1].t0 << ", " << v[i - 1].t1 << "] and [" << v[i].t0 << ", " << v[i].t1 << "])";
   }
 }
 
@@ -574,7 +599,8 @@ TEST(EngineCasesThreads, OneAndTwoThreadsGiveIdenticalResults) {
   solids.push_back(stdlib::sphere({20, 20, 12}, 5, 48, 24, 0));
   solids.push_back(stdlib::box({5, 5, 0}, {12, 9, 25}));  // pokes through buildings: intersection lines
   const Scene scene = scene_of(solids);
-  for (const Camera& cam : {lookat({-25, -35, 45}, {20, 20, 5}), ortho({-25, -35, 45}, {20, 20, 5}, {0, 0, 1}, 70)}) {
+  for (const Camera& cam :
+       {lookat({-25, -35, 45}, {20, 20, 5}), ortho({-25, -35, 45}, {20, 20, 5}, {0, 0, 1}, 70)}) {
     for (bool hidden : {false, true}) {
       HlrOptions opt;
       opt.include_hidden = hidden;
@@ -585,7 +611,8 @@ TEST(EngineCasesThreads, OneAndTwoThreadsGiveIdenticalResults) {
       for (unsigned threads : {2u, 3u, 0u}) {
         opt.threads = threads;
         const FrameResult other = render_frame(scene, cam, opt);
-        const std::string label = cam.kind + " threads " + std::to_string(threads) + (hidden ? " +hidden" : "");
+        const std::string label =
+            cam.kind + " threads " + std::to_string(threads) + (hidden ? " +hidden" : "");
         ASSERT_EQ(one.segments.size(), other.segments.size()) << label;
         for (std::size_t i = 0; i < one.segments.size(); ++i) {
           const VisibleSegment &a = one.segments[i], &b = other.segments[i];
@@ -612,7 +639,8 @@ TEST(EngineCasesThreads, OneAndTwoThreadsGiveIdenticalResults) {
 // edges) and |z| = 4.5 (depth 4.5: its back edge at x = 1, y = −0.5). The pole's silhouette spans picture
 // x ∈ [1/4.5, 1.5/4], hiding the bar's edges (depth 5) for x ∈ [5/4.5, 1.875].
 TEST(EngineCasesFrame, LookatFrameClipsExactly) {
-  const Scene scene = scene_of({stdlib::box({-20, 0, -0.5}, {20, 1, 0.5}), stdlib::box({1, -1, -20}, {1.5, -0.5, 20})});
+  const Scene scene =
+      scene_of({stdlib::box({-20, 0, -0.5}, {20, 1, 0.5}), stdlib::box({1, -1, -20}, {1.5, -0.5, 20})});
   const Camera cam = lookat({0, -5, 0}, {0, 0, 0}, {0, 0, 1}, 90, 1.5);
   ASSERT_TRUE(cam.frame.has_value());
   EXPECT_NEAR(cam.focal, 1, 1e-15);
@@ -637,7 +665,8 @@ TEST(EngineCasesFrame, LookatFrameClipsExactly) {
   // The cut ends lie on the frame.
   int on_frame = 0;
   for (const VisibleSegment& s : r.segments)
-    for (Point2 q : {s.s0, s.s1}) on_frame += std::abs(std::abs(q.x) - 1.5) < 1e-12 || std::abs(std::abs(q.y) - 1) < 1e-12;
+    for (Point2 q : {s.s0, s.s1})
+      on_frame += std::abs(std::abs(q.x) - 1.5) < 1e-12 || std::abs(std::abs(q.y) - 1) < 1e-12;
   EXPECT_EQ(on_frame, 2 + 2 + 6);
 }
 

@@ -15,6 +15,7 @@
 #include <set>
 #include <sstream>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "core/camera/lookat_camera.hpp"
@@ -89,7 +90,8 @@ std::set<std::uint32_t> pfister_kept(const Solid& solid, const Facing& facing, b
     const SolidEdge& e = solid.edges[i];
     if (e.left < 0 || e.right < 0) continue;
     if (e.kind == EdgeKind::Flat && !include_flat) continue;
-    const int on = facing.on_view[static_cast<std::size_t>(e.left)] + facing.on_view[static_cast<std::size_t>(e.right)];
+    const int on =
+        facing.on_view[static_cast<std::size_t>(e.left)] + facing.on_view[static_cast<std::size_t>(e.right)];
     if (is_concave(solid, e) ? on == 2 : on >= 1) kept.insert(i);
   }
   return kept;
@@ -105,13 +107,15 @@ bool same_point(Point3 a, Point3 b, double tol) { return distance(a, b) <= tol; 
 
 // Whether segment s runs between a and b (either direction).
 bool same_ends(const VisibleSegment& s, Point3 a, Point3 b, double tol) {
-  return (same_point(s.p0, a, tol) && same_point(s.p1, b, tol)) || (same_point(s.p0, b, tol) && same_point(s.p1, a, tol));
+  return (same_point(s.p0, a, tol) && same_point(s.p1, b, tol)) ||
+         (same_point(s.p0, b, tol) && same_point(s.p1, a, tol));
 }
 
 void expect_finite(const FrameResult& r, const std::string& label) {
   for (const VisibleSegment& s : r.segments) {
     EXPECT_TRUE(is_finite(s.p0) && is_finite(s.p1)) << label << ": non-finite world point";
-    EXPECT_TRUE(std::isfinite(s.s0.x) && std::isfinite(s.s0.y) && std::isfinite(s.s1.x) && std::isfinite(s.s1.y))
+    EXPECT_TRUE(std::isfinite(s.s0.x) && std::isfinite(s.s0.y) && std::isfinite(s.s1.x) &&
+                std::isfinite(s.s1.y))
         << label << ": non-finite picture point";
   }
 }
@@ -151,18 +155,20 @@ std::size_t expect_exactly_pfister(const Solid& solid, const Camera& camera, con
     ++drawn[s.edge];
     const SolidEdge& e = solid.edges[s.edge];
     EXPECT_TRUE(same_ends(s, solid.vertices[e.v0], solid.vertices[e.v1], tol))
-        << label << ": edge " << s.edge << " " << str(solid.vertices[e.v0]) << "–" << str(solid.vertices[e.v1])
-        << " not drawn whole: got " << str(s.p0) << "–" << str(s.p1);
+        << label << ": edge " << s.edge << " " << str(solid.vertices[e.v0]) << "–"
+        << str(solid.vertices[e.v1]) << " not drawn whole: got " << str(s.p0) << "–" << str(s.p1);
     const Point2 q0 = camera.project(s.p0), q1 = camera.project(s.p1);
-    const double ptol = 1e-9 * std::max({1.0, std::abs(q0.x), std::abs(q0.y), std::abs(q1.x), std::abs(q1.y)});
+    const double ptol =
+        1e-9 * std::max({1.0, std::abs(q0.x), std::abs(q0.y), std::abs(q1.x), std::abs(q1.y)});
     EXPECT_LE(distance(q0, s.s0), ptol) << label << ": picture point does not match the world point";
     EXPECT_LE(distance(q1, s.s1), ptol) << label << ": picture point does not match the world point";
   }
   for (std::uint32_t e : kept) {
     const auto it = drawn.find(e);
     const int n = it == drawn.end() ? 0 : it->second;
-    EXPECT_EQ(n, 1) << label << ": Pfister keeps edge " << e << " " << str(solid.vertices[solid.edges[e].v0]) << "–"
-                    << str(solid.vertices[solid.edges[e].v1]) << "; the engine drew it " << n << " times";
+    EXPECT_EQ(n, 1) << label << ": Pfister keeps edge " << e << " " << str(solid.vertices[solid.edges[e].v0])
+                    << "–" << str(solid.vertices[solid.edges[e].v1]) << "; the engine drew it " << n
+                    << " times";
   }
   for (const auto& [e, n] : drawn)
     EXPECT_TRUE(kept.count(e)) << label << ": the engine drew edge " << e << " "
@@ -250,7 +256,9 @@ Solid icosahedron_like() {
   for (std::uint32_t i = 0; i < n; ++i)
     for (std::uint32_t j = i + 1; j < n; ++j)
       for (std::uint32_t k = j + 1; k < n; ++k) {
-        auto edge = [&](std::uint32_t a, std::uint32_t b) { return std::abs(distance(v[a], v[b]) - 2) < 1e-9; };
+        auto edge = [&](std::uint32_t a, std::uint32_t b) {
+          return std::abs(distance(v[a], v[b]) - 2) < 1e-9;
+        };
         if (!(edge(i, j) && edge(j, k) && edge(i, k))) continue;
         const Vector3 nrm = cross(v[j] - v[i], v[k] - v[i]);
         const Vector3 out = to_vector(v[i]) + to_vector(v[j]) + to_vector(v[k]);
@@ -338,14 +346,18 @@ TEST(PfisterCube, AxisViewsDrawOnlyTheFourTopEdges) {
   const Solid cube = stdlib::box({0, 0, 0}, {1, 1, 1});
   const Solid centred = stdlib::box({-0.5, -0.5, -0.5}, {0.5, 0.5, 0.5});
   // Orthographic along −z: the four side faces are exactly edge-on.
-  EXPECT_EQ(expect_exactly_pfister(cube, ortho({0.5, 0.5, 5}, {0.5, 0.5, 0.5}, {0, 1, 0}), "ortho along -z", true), 4u);
-  EXPECT_EQ(expect_exactly_pfister(cube, ortho({0.2, 0.7, 5}, {0.2, 0.7, 0.5}, {1, 0, 0}), "ortho along -z, off centre",
-                                   true),
+  EXPECT_EQ(
+      expect_exactly_pfister(cube, ortho({0.5, 0.5, 5}, {0.5, 0.5, 0.5}, {0, 1, 0}), "ortho along -z", true),
+      4u);
+  EXPECT_EQ(expect_exactly_pfister(cube, ortho({0.2, 0.7, 5}, {0.2, 0.7, 0.5}, {1, 0, 0}),
+                                   "ortho along -z, off centre", true),
             4u);
   // Orthographic along +x (looking at the x = 0 face): its 4 edges.
   EXPECT_EQ(expect_exactly_pfister(cube, ortho({-5, 0.5, 0.5}, {0.5, 0.5, 0.5}), "ortho along +x", true), 4u);
   // Perspective from straight above the centre: the side faces are seen from behind.
-  EXPECT_EQ(expect_exactly_pfister(cube, lookat({0.5, 0.5, 5}, {0.5, 0.5, 0.5}, {0, 1, 0}), "lookat from above"), 4u);
+  EXPECT_EQ(
+      expect_exactly_pfister(cube, lookat({0.5, 0.5, 5}, {0.5, 0.5, 0.5}, {0, 1, 0}), "lookat from above"),
+      4u);
   // §10's (0°, 0°): the eye on +z at R = 5 looking at the origin.
   EXPECT_EQ(expect_exactly_pfister(centred, pfister_view(0, 0), "(0°, 0°) centred cube"), 4u);
   // The same view of the cube in [0, 1]³: the eye lies in the planes x = 0 and y = 0 (edge-on faces).
@@ -391,7 +403,8 @@ TEST(PfisterConvex, CoarseSphereAllFeatureEdges) {
   }
   // Straight down the pole axis, perspective and orthographic (no face is edge-on: all are slanted).
   expect_exactly_pfister(ball, lookat({0.1, -0.2, 5}, {0.1, -0.2, 0.3}, {0, 1, 0}), "sphere from the pole");
-  expect_exactly_pfister(ball, ortho({0.1, -0.2, 5}, {0.1, -0.2, 0.3}, {0, 1, 0}), "sphere ortho from the pole");
+  expect_exactly_pfister(ball, ortho({0.1, -0.2, 5}, {0.1, -0.2, 0.3}, {0, 1, 0}),
+                         "sphere ortho from the pole");
 }
 
 TEST(PfisterConvex, IcosahedronLikeMesh) {
@@ -427,7 +440,8 @@ TEST(PfisterConvex, RotatedBox) {
 
 // The engine's visible edges must be among Pfister's (non-flat) kept edges; each piece must lie on its
 // edge; the concave edge must not be drawn unless both its faces are on view. Returns the edges drawn.
-std::set<std::uint32_t> expect_subset_of_pfister(const Solid& solid, const Camera& camera, const std::string& label) {
+std::set<std::uint32_t> expect_subset_of_pfister(const Solid& solid, const Camera& camera,
+                                                 const std::string& label) {
   const Facing facing = facing_of(solid, camera);
   for (std::size_t f = 0; f < facing.cosine.size(); ++f)
     EXPECT_GT(std::abs(facing.cosine[f]), 1e-6) << label << ": face " << f << " nearly edge-on";
@@ -461,9 +475,11 @@ std::set<std::uint32_t> expect_subset_of_pfister(const Solid& solid, const Camer
   for (std::uint32_t i = 0; i < solid.edges.size(); ++i) {
     const SolidEdge& e = solid.edges[i];
     if (e.left < 0 || e.right < 0 || !is_concave(solid, e)) continue;
-    const int on = facing.on_view[static_cast<std::size_t>(e.left)] + facing.on_view[static_cast<std::size_t>(e.right)];
+    const int on =
+        facing.on_view[static_cast<std::size_t>(e.left)] + facing.on_view[static_cast<std::size_t>(e.right)];
     if (on < 2) {
-      EXPECT_FALSE(drawn.count(i)) << label << ": concave edge " << i << " drawn with " << on << " face(s) on view";
+      EXPECT_FALSE(drawn.count(i)) << label << ": concave edge " << i << " drawn with " << on
+                                   << " face(s) on view";
     }
   }
   return drawn;
@@ -472,7 +488,8 @@ std::set<std::uint32_t> expect_subset_of_pfister(const Solid& solid, const Camer
 std::uint32_t find_edge(const Solid& solid, Point3 a, Point3 b) {
   for (std::uint32_t i = 0; i < solid.edges.size(); ++i) {
     const Point3 p = solid.vertices[solid.edges[i].v0], q = solid.vertices[solid.edges[i].v1];
-    if ((same_point(p, a, 1e-12) && same_point(q, b, 1e-12)) || (same_point(p, b, 1e-12) && same_point(q, a, 1e-12)))
+    if ((same_point(p, a, 1e-12) && same_point(q, b, 1e-12)) ||
+        (same_point(p, b, 1e-12) && same_point(q, a, 1e-12)))
       return i;
   }
   ADD_FAILURE() << "no edge " << str(a) << "–" << str(b);
@@ -511,8 +528,9 @@ TEST(PfisterLPrism, ReferenceViewsKeptCountsAndEngineSubset) {
   const std::set<std::uint32_t> d1 = expect_subset_of_pfister(single, v1, "L (30°, 20°)");
   EXPECT_FALSE(d1.count(concave));
   // (−150°, 20°): both faces on view; the eye looks through the notch, nothing hides the edge (checked by
-  // hand: the rays to its ends cross z = 0 at (1.27, 1.14) and (1.15, 1.08), outside the L, and the plane
-  // x = 2 at y > 1.5, outside that face), so it is drawn whole.
+  // hand: the rays from the eye (2.35, 1.71, −4.07) to its top end and midpoint cross z = 0 at (1.27, 1.14)
+  // and (1.15, 1.08), in the notch outside the L, and the plane x = 2 at y > 1.5, outside that face), so it
+  // is drawn whole.
   const Facing f2 = facing_of(single, v2);
   EXPECT_TRUE(f2.on_view[static_cast<std::size_t>(single.edges[concave].left)]);
   EXPECT_TRUE(f2.on_view[static_cast<std::size_t>(single.edges[concave].right)]);
@@ -555,7 +573,8 @@ TEST(PfisterLPrism, RandomViewsSubsetAndConcaveRule) {
         expect_subset_of_pfister(solid, views.cameras[i], label);
         const Facing f = facing_of(solid, views.cameras[i]);
         const SolidEdge& e = solid.edges[concave];
-        const int on = f.on_view[static_cast<std::size_t>(e.left)] + f.on_view[static_cast<std::size_t>(e.right)];
+        const int on =
+            f.on_view[static_cast<std::size_t>(e.left)] + f.on_view[static_cast<std::size_t>(e.right)];
         if (on == 2) {
           ++both_on_views;
           continue;

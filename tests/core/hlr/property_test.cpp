@@ -30,7 +30,7 @@ namespace gen = hlr::stdlib;
 // Scene families, chosen by seed % kFamilies.
 enum Family {
   kBoxes, kRotated, kLBlocks, kStairs, kInterpenetrating, kPlates, kSphere, kCloseIn, kMixed,
-  kTorus, kMesh, kCity, kStacked, kAxisView, kRoom, kFamilies
+  kTorus, kMesh, kCity, kStacked, kAxisView, kRoom, kLattice, kScales, kFamilies
 };
 // 20 seeds per family, 300 scenes: about 2 s in Release, 35 s under ASan+UBSan (Debug) on one core.
 constexpr int kSeeds = 20 * kFamilies;
@@ -39,7 +39,8 @@ const char* family_name(int f) {
   static const char* names[] = {"boxes", "rotated boxes", "L-blocks", "stairs", "interpenetrating boxes",
                                 "plates with holes", "sphere", "eye close in", "mixed", "torus",
                                 "bumpy closed mesh", "box city", "stacked and touching boxes",
-                                "axis-aligned view (edge-on faces)", "eye inside a room"};
+                                "axis-aligned view (edge-on faces)", "eye inside a room",
+                                "cube lattice seen along a diagonal", "sizes from 0.01 to 100"};
   return names[f];
 }
 
@@ -234,6 +235,31 @@ void build_scene(int family, Rng& r, Case& c, Point3& center, double& radius) {
       center = {0, 0, 1};
       break;
     }
+    case kLattice: {
+      // Unit cubes on an integer lattice, seen (in make_case) exactly along a lattice diagonal: corners
+      // and edges of different cubes project onto each other exactly.
+      int i = 0;
+      for (int x = 0; x < 3; ++x)
+        for (int y = 0; y < 3; ++y)
+          for (int z = 0; z < 3; ++z)
+            if (r.integer(0, 2) == 0)
+              add(c, "cube" + std::to_string(i++), gen::box({2.0 * x, 2.0 * y, 2.0 * z}, {2.0 * x + 1, 2.0 * y + 1, 2.0 * z + 1}));
+      if (i == 0) add(c, "cube", gen::box({0, 0, 0}, {1, 1, 1}));
+      center = {2.5, 2.5, 2.5};
+      radius = 5;
+      break;
+    }
+    case kScales: {
+      // A large block beside small ones four orders of magnitude smaller, the camera zoomed in on them:
+      // the tolerances must scale with the scene, not be absolute.
+      add(c, "big", gen::box({-100, 1, 0}, {100, 60, 40}));
+      for (int i = 0; i < 4; ++i)
+        add(c, "small" + std::to_string(i), random_box(r, {-0.05, -0.05, 0}, {0.03, 0.8, 0.03}, 0.01, 0.05));
+      add(c, "tilted", gen::rotated_box({0, 0.5, 0.05}, {0.1, 0.02, 0.04}, r.direction(), r(0, 180)));
+      center = {0, 0.3, 0.02};
+      radius = 0.15;
+      break;
+    }
   }
 }
 
@@ -265,6 +291,15 @@ Case make_case(unsigned seed) {
       c.camera = ortho_camera(OrthoParameters{c.eye + Vector3{12, -9, 8}, c.target, {0, 0, 1}, 14, aspect});
     else
       c.camera = lookat_camera(LookatParameters{c.eye, c.target, {0, 0, 1}, r(50, 100), aspect, 0});
+  } else if (family == kLattice) {
+    // Along (1, 1, 1) or (1, −1, 1) from an eye on the diagonal through the lattice's centre.
+    const Vector3 diag = r.integer(0, 1) ? Vector3{1, 1, 1} : Vector3{1, -1, 1};
+    c.target = {2.5, 2.5, 2.5};
+    c.eye = c.target + (ortho ? 10.0 : 6.0) * diag;
+    if (ortho)
+      c.camera = ortho_camera(OrthoParameters{c.eye, c.target, {0, 0, 1}, 12, aspect});
+    else
+      c.camera = lookat_camera(LookatParameters{c.eye, c.target, {0, 0, 1}, 60, aspect, 0});
   } else if (family == kAxisView) {
     // Exactly along −y, the eye at the height of the boxes' top faces (perspective: those faces are
     // edge-on; orthographic: every face parallel to y is).
@@ -278,7 +313,7 @@ Case make_case(unsigned seed) {
     // From a random direction above the horizon, far enough to see the whole scene (or most of it).
     const double az = r(0, 2 * std::numbers::pi), el = r(0.1, 1.3);
     const Vector3 dir{std::cos(el) * std::cos(az), std::cos(el) * std::sin(az), std::sin(el)};
-    c.target = center + Vector3{r(-0.5, 0.5), r(-0.5, 0.5), r(-0.5, 0.5)};
+    c.target = center + radius * Vector3{r(-0.1, 0.1), r(-0.1, 0.1), r(-0.1, 0.1)};
     c.eye = c.target + r(2, 4) * radius * dir;
     // With a frame, half the time zoom in on a vertex so that the frame clips the scene.
     const bool zoom = aspect > 0 && r.integer(0, 1) == 1;
@@ -320,7 +355,7 @@ TEST_P(HlrProperty, Random) {
   // (The close-in views are degenerate by design: rays at grazing angles meet the near plane where it
   // cuts the face beside the eye.)
   const int family = static_cast<int>(seed % kFamilies);
-  if (family != kCloseIn && family != kAxisView) {
+  if (family != kCloseIn && family != kAxisView && family != kLattice) {
     EXPECT_LT(report.drawn_ambiguous, report.drawn_samples / 4 + 8) << report.summary();
   }
   if (HasFailure() || std::getenv("HLR_PROPERTY_VERBOSE")) std::cout << "seed " << seed << ": " << report.summary() << "\n";

@@ -1,6 +1,7 @@
 // SolidBuilder on small solids: orientation, edge kinds, holes, markings and robustness.
 #include <gtest/gtest.h>
 
+#include <bit>
 #include <cmath>
 #include <numbers>
 #include <random>
@@ -192,8 +193,17 @@ TEST(SolidBuilder, CreaseAngleMakesCylinderSidesSmooth) {
 
 // A 4×4 plate, 1 thick, with a 2×2 square hole through it. Corners: outer o0..o3, hole h0..h3, at z = 0
 // ("b" prefix) and z = 1 ("t" prefix).
-SolidBuilder plate_with_hole(bool top_as_loop) {
+SolidBuilder plate_with_hole(bool top_as_loop, std::uint32_t reversed_faces = 0) {
   SolidBuilder b;
+  // Faces whose bit is set in `reversed_faces` are listed in the opposite order.
+  int next_face = 0;
+  auto face = [&](std::vector<std::string> outer, std::vector<std::vector<std::string>> holes, std::int64_t tag) {
+    if (reversed_faces >> next_face++ & 1) {
+      std::reverse(outer.begin(), outer.end());
+      for (auto& h : holes) std::reverse(h.begin(), h.end());
+    }
+    b.add_face(outer, holes, tag);
+  };
   const double outer[4][2] = {{0, 0}, {4, 0}, {4, 4}, {0, 4}}, hole[4][2] = {{1, 1}, {3, 1}, {3, 3}, {1, 3}};
   for (const char* level : {"b", "t"}) {
     const double z = level[0] == 't' ? 1 : 0;
@@ -203,12 +213,13 @@ SolidBuilder plate_with_hole(bool top_as_loop) {
   if (top_as_loop)  // Desens' style: one loop, the hole reached by the doubled bridge to0–th0
     b.add_face_loop({"to0", "to1", "to2", "to3", "to0", "th0", "th3", "th2", "th1", "th0"}, 1);
   else  // hole listed counter-clockwise on purpose: the builder orients holes itself
-    b.add_face({"to0", "to1", "to2", "to3"}, {{"th0", "th1", "th2", "th3"}}, 1);
-  b.add_face({"bo0", "bo3", "bo2", "bo1"}, {{"bh0", "bh3", "bh2", "bh1"}}, 2);
+    face({"to0", "to1", "to2", "to3"}, {{"th0", "th1", "th2", "th3"}}, 1);
+  if (top_as_loop) ++next_face;
+  face({"bo0", "bo3", "bo2", "bo1"}, {{"bh0", "bh3", "bh2", "bh1"}}, 2);
   for (int i = 0; i < 4; ++i) {
     const std::string a = std::to_string(i), c = std::to_string((i + 1) % 4);
-    b.add_face({"bo" + a, "bo" + c, "to" + c, "to" + a}, {}, 3 + i);  // outer walls face out
-    b.add_face({"bh" + c, "bh" + a, "th" + a, "th" + c}, {}, 7 + i);  // hole walls face the hole's axis
+    face({"bo" + a, "bo" + c, "to" + c, "to" + a}, {}, 3 + 2 * i);  // outer walls face out
+    face({"bh" + c, "bh" + a, "th" + a, "th" + c}, {}, 4 + 2 * i);  // hole walls face the hole's axis
   }
   return b;
 }
@@ -248,6 +259,23 @@ TEST(SolidBuilder, PlateWithHoleIsAClosedTorus) {
       EXPECT_EQ(bridge->left, 0);
       EXPECT_EQ(bridge->right, 0);
     }
+  }
+}
+
+// Any set of reversed faces of a non-convex solid of genus 1 is put right, with one warning per
+// reversed face, and the result encloses the right volume.
+TEST(SolidBuilder, RandomlyReversedFacesOfAPlateAreReoriented) {
+  std::mt19937 rng(7);
+  for (int trial = 0; trial < 60; ++trial) {
+    const std::uint32_t reversed = rng() & 0x3ff;
+    SCOPED_TRACE(id("reversed faces mask ", reversed));
+    const SolidBuildResult r = plate_with_hole(false, reversed).build();
+    ASSERT_TRUE(r.ok()) << all_messages(r);
+    const auto warnings = with_code(r, "reoriented");
+    EXPECT_EQ(warnings.size(), static_cast<std::size_t>(std::popcount(reversed))) << all_messages(r);
+    for (const SolidDiagnostic* d : warnings) EXPECT_TRUE(reversed >> (d->tag - 1) & 1) << d->message;
+    expect_valid_solid(*r.solid);
+    EXPECT_NEAR(signed_volume(*r.solid), 12, 1e-12);
   }
 }
 
