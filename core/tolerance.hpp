@@ -26,6 +26,27 @@ struct Tolerance {
 
   double length = 0;  // absolute length tolerance in the units of the data compared
 
+  // Picture-space tolerance for comparisons among projected points whose largest |coordinate| is
+  // `max_abs`: projection keeps relative error, so the tolerance is relative to those coordinates — local,
+  // so that geometry projected far off-axis (near the near plane) does not coarsen the rest of the
+  // picture — but never below the view-space tolerance `length` seen at the nearest `depth` (perspective;
+  // pass depth = 1 for orthographic, where picture = focal · view).
+  static double picture(double max_abs, double focal, double length, double depth) {
+    return std::max(kRelative * max_abs, std::abs(focal) * length / std::max(depth, 1e-300));
+  }
+
+  // Rounding of coordinates themselves: the engine works in view space, where every coordinate comes from
+  // a world coordinate through ~10 operations; bounding 64 of them (pbrt's gamma(64) ≈ 7.1e-15) covers the
+  // transform with margin. Far from the world origin this, not kRelative, is the honest floor.
+  static constexpr double kRounding = 64 * 0x1p-53;
+
+  // View-space tolerance: relative to the view-space extent of the scene, plus the rounding carried from
+  // world coordinates of magnitude up to `world_extent` (so a scene translated far from the origin keeps
+  // its decisions).
+  static Tolerance for_view(double view_extent, double world_extent) {
+    return Tolerance{kRelative * std::abs(view_extent) + kRounding * std::abs(world_extent) + 1e-300};
+  }
+
   // Tolerance for data whose coordinates have magnitude up to `extent`.
   static Tolerance for_extent(double extent) {
     return Tolerance{kRelative * std::max(std::abs(extent), 1e-300)};

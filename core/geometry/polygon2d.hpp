@@ -23,16 +23,22 @@ inline double distance2_to_segment(Point2 p, Point2 a, Point2 b) {
 }
 
 // points: all rings concatenated; ring_ends: exclusive end offset of each ring within `points`.
+// seam (optional, one flag per point): the edge from points[i] to the next is a seam the polygon shares
+// with a neighbour that continues it on the other side, so a point on it is inside the union, not on its
+// boundary.
 inline PointClass classify_point(std::span<const Point2> points, std::span<const std::uint32_t> ring_ends,
-                                 Point2 p, double tolerance) {
+                                 Point2 p, double tolerance, std::span<const std::uint8_t> seam = {}) {
   const double tol2 = tolerance * tolerance;
-  bool inside = false;
+  bool inside = false, on_seam = false;
   std::uint32_t begin = 0;
   for (std::uint32_t end : ring_ends) {
     for (std::uint32_t i = begin; i < end; ++i) {
       const Point2 a = points[i];
       const Point2 b = points[i + 1 < end ? i + 1 : begin];
-      if (distance2_to_segment(p, a, b) <= tol2) return PointClass::Boundary;
+      if (distance2_to_segment(p, a, b) <= tol2) {
+        if (seam.empty() || !seam[i]) return PointClass::Boundary;
+        on_seam = true;
+      }
       // Half-open rule on y so a vertex on the ray is counted once.
       if ((a.y > p.y) != (b.y > p.y)) {
         const double x = a.x + (p.y - a.y) * (b.x - a.x) / (b.y - a.y);
@@ -41,7 +47,7 @@ inline PointClass classify_point(std::span<const Point2> points, std::span<const
     }
     begin = end;
   }
-  return inside ? PointClass::Inside : PointClass::Outside;
+  return (inside || on_seam) ? PointClass::Inside : PointClass::Outside;
 }
 
 }  // namespace hlr

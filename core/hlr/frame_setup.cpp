@@ -11,27 +11,43 @@ namespace {
 
 bool is_perspective(const Camera& camera) { return camera.projection == Projection::Perspective; }
 
-double view_extent(const Scene& scene, const Camera& camera) {
-  double extent = 0;
+// The view-space tolerance of the frame: relative to the view-space coordinates, plus the rounding their
+// world-space sources carry (far from the origin, a view coordinate inherits the world coordinate's).
+Tolerance frame_tolerance(const Scene& scene, const Camera& camera) {
+  double view = 0, world = 0;
   for (const SceneObject& object : scene.objects)
     for (Point3 p : object.solid.vertices) {
       const Point3 v = camera.view(p);
-      extent = std::max({extent, std::abs(v.x), std::abs(v.y), std::abs(v.z)});
+      view = std::max({view, std::abs(v.x), std::abs(v.y), std::abs(v.z)});
+      world = std::max({world, std::abs(p.x), std::abs(p.y), std::abs(p.z)});
     }
-  return extent;
+  if (camera.projection == Projection::Perspective) {
+    const Point3 eye = camera.eye_world();
+    world = std::max({world, std::abs(eye.x), std::abs(eye.y), std::abs(eye.z)});
+  }
+  return Tolerance::for_view(view, world);
 }
 
-// Sutherland–Hodgman against depth ≥ near. For a non-convex ring the result may contain edges doubled
-// along the clip line; containment is even-odd, so they cancel.
-void clip_ring_to_near(const std::vector<Point3>& ring, double near, std::vector<Point3>& out) {
+// Sutherland–Hodgman against depth ≥ near, carrying each edge's seam flag. For a non-convex ring the
+// result may contain edges doubled along the clip line; containment is even-odd, so they cancel. Edges
+// along the clip line are outline, not seam.
+void clip_ring_to_near(const std::vector<Point3>& ring, const std::vector<std::uint8_t>& seam, double near,
+                       std::vector<Point3>& out, std::vector<std::uint8_t>& out_seam) {
   out.clear();
+  out_seam.clear();
   const std::size_t n = ring.size();
   for (std::size_t i = 0; i < n; ++i) {
     const Point3& a = ring[i];
     const Point3& b = ring[(i + 1) % n];
     const bool a_in = a.z >= near, b_in = b.z >= near;
-    if (a_in) out.push_back(a);
-    if (a_in != b_in) out.push_back(lerp(a, b, (near - a.z) / (b.z - a.z)));
+    if (a_in) {
+      out.push_back(a);
+      out_seam.push_back(seam[i]);
+    }
+    if (a_in != b_in) {
+      out.push_back(lerp(a, b, (near - a.z) / (b.z - a.z)));
+      out_seam.push_back(a_in ? 0 : seam[i]);  // leaving: along the clip line; entering: rest of a→b
+    }
   }
 }
 
@@ -47,8 +63,10 @@ void add_occluders(FrameSetup& setup, std::uint32_t object_index, const Solid& s
                    const std::vector<Point3>& view_vertices, const std::vector<std::int8_t>& facing, bool cull,
                    const Camera& camera) {
   std::vector<Point3> ring_points, clipped;
+  std::vector<std::uint8_t> ring_seams, clipped_seams;
+  auto occludes = [&](FaceIndex f) { return f != kNoFace && facing[f] != 0 && !(cull && facing[f] < 0); };
   for (std::size_t f = 0; f < solid.faces.size(); ++f) {
-    if (facing[f] == 0 || (cull && facing[f] < 0)) continue;
+    if (!occludes(static_cast<FaceIndex>(f))) continue;
     const Face& face = solid.faces[f];
     Occluder occ;
     occ.object = object_index;
@@ -77,13 +95,28 @@ void add_occluders(FrameSetup& setup, std::uint32_t object_index, const Solid& s
     occ.min_depth = 1e300;
     for (const Ring& ring : face.rings) {
       ring_points.clear();
-      for (VertexIndex v : ring.vertices) ring_points.push_back(view_vertices[v]);
+      ring_seams.clear();
+      for (std::size_t i = 0; i < ring.vertices.size(); ++i) {
+        ring_points.push_back(view_vertices[ring.vertices[i]]);
+        // A seam: the neighbour across this edge also hides and faces the same way, so the two project
+        // to opposite sides of the edge and together cover it.
+        std::uint8_t seam = 0;
+        if (i < ring.edges.size() && ring.edges[i] != kNoEdge) {
+          const SolidEdge& e = solid.edges[ring.edges[i]];
+          const FaceIndex other = e.left == static_cast<FaceIndex>(f) ? e.right : e.left;
+          seam = other != static_cast<FaceIndex>(f) && occludes(other) && facing[other] == facing[f];
+        }
+        ring_seams.push_back(seam);
+      }
       const std::vector<Point3>* pts = &ring_points;
+      const std::vector<std::uint8_t>* seams = &ring_seams;
       if (is_perspective(camera)) {
-        clip_ring_to_near(ring_points, camera.near_depth, clipped);
+        clip_ring_to_near(ring_points, ring_seams, camera.near_depth, clipped, clipped_seams);
         pts = &clipped;
+        seams = &clipped_seams;
       }
       if (pts->size() < 3) continue;
+      setup.polygon_seams.insert(setup.polygon_seams.end(), seams->begin(), seams->end());
       for (const Point3& p : *pts) {
         const Point2 q = camera.project_view(p);
         setup.polygon_points.push_back(q);
@@ -100,6 +133,12 @@ void add_occluders(FrameSetup& setup, std::uint32_t object_index, const Solid& s
 
 }  // namespace
 
+void set_picture_tolerance(Candidate& c, const Camera& camera, double length_tolerance) {
+  const double max_abs = std::max({std::abs(c.pic0.x), std::abs(c.pic0.y), std::abs(c.pic1.x), std::abs(c.pic1.y)});
+  const double depth = is_perspective(camera) ? std::min(c.view0.z, c.view1.z) : 1.0;
+  c.picture_tolerance = Tolerance::picture(max_abs, camera.focal, length_tolerance, depth);
+}
+
 std::vector<std::int8_t> face_facing(const Solid& solid, const Camera& camera, double length_tolerance) {
   std::vector<std::int8_t> facing(solid.faces.size(), 0);
   const bool persp = is_perspective(camera);
@@ -109,7 +148,9 @@ std::vector<std::int8_t> face_facing(const Solid& solid, const Camera& camera, d
     const Vector3 n = solid.planes[f].normal;
     double s, tol;
     if (persp) {
-      s = solid.planes[f].signed_distance(eye);
+      // Measured from a vertex of the face, not through the plane's offset: no cancellation far from
+      // the origin.
+      s = dot(n, eye - solid.vertices[solid.faces[f].rings[0].vertices[0]]);
       tol = length_tolerance;
     } else {
       s = -dot(n, dir);
@@ -122,8 +163,7 @@ std::vector<std::int8_t> face_facing(const Solid& solid, const Camera& camera, d
 
 FrameSetup prepare_frame(const Scene& scene, const Camera& camera, bool intersection_lines, bool keep_culled) {
   FrameSetup setup;
-  const double extent = view_extent(scene, camera);
-  setup.length_tolerance = Tolerance::for_extent(extent).length;
+  setup.length_tolerance = frame_tolerance(scene, camera).length;
   const bool persp = is_perspective(camera);
 
   std::vector<std::vector<std::int8_t>> facing(scene.objects.size());
@@ -206,15 +246,13 @@ FrameSetup prepare_frame(const Scene& scene, const Camera& camera, bool intersec
   }
   setup.candidates.resize(kept);
 
-  double picture_extent = 0;
-  if (camera.frame) {
-    const Rect2& f = *camera.frame;
-    picture_extent = std::max({std::abs(f.xmin), std::abs(f.xmax), std::abs(f.ymin), std::abs(f.ymax)});
-  } else if (!setup.picture_bounds.empty()) {
-    const Rect2& b = setup.picture_bounds;
-    picture_extent = std::max({std::abs(b.xmin), std::abs(b.xmax), std::abs(b.ymin), std::abs(b.ymax)});
+  for (Candidate& c : setup.candidates) set_picture_tolerance(c, camera, setup.length_tolerance);
+  for (Occluder& o : setup.occluders) {
+    const Rect2& b = o.bounds;
+    const double max_abs = std::max({std::abs(b.xmin), std::abs(b.xmax), std::abs(b.ymin), std::abs(b.ymax)});
+    o.picture_tolerance =
+        Tolerance::picture(max_abs, camera.focal, setup.length_tolerance, persp ? o.min_depth : 1.0);
   }
-  setup.picture_tolerance = Tolerance::for_extent(picture_extent).length;
   return setup;
 }
 

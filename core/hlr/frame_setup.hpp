@@ -24,6 +24,7 @@ struct Occluder {
   double eye_side = 1;
   double min_depth = 0;  // nearest view depth of the clipped polygon
   Rect2 bounds;          // picture bounds of the clipped polygon
+  double picture_tolerance = 0;  // Tolerance::picture of its projected points
   std::uint32_t first_point = 0;  // into FrameSetup::polygon_points
   std::uint32_t first_ring = 0;   // into FrameSetup::ring_ends
   std::uint32_t ring_count = 0;
@@ -42,17 +43,23 @@ struct Candidate {
   Point3 view0, view1;    // view points of the clipped ends
   Point2 pic0, pic1;      // picture points of the clipped ends
   bool culled = false;    // hidden by the back-face rules alone (no occlusion test needed)
+  double picture_tolerance = 0;  // Tolerance::picture of its end points (set_picture_tolerance)
 };
 
 struct FrameSetup {
   std::vector<Occluder> occluders;
   std::vector<Point2> polygon_points;     // all occluder rings, concatenated
+  // Per point: the ring edge starting there is a seam with a neighbouring occluder that continues the
+  // surface on the other side (same solid, same facing), so it is not an outline of what hides.
+  std::vector<std::uint8_t> polygon_seams;
   std::vector<std::uint32_t> ring_ends;   // end offset (exclusive) of each ring in polygon_points
   std::vector<Candidate> candidates;
   double length_tolerance = 0;   // view-space
-  double picture_tolerance = 0;  // picture-space
   Rect2 picture_bounds = Rect2::none();  // of all candidates
 };
+
+// Sets c.picture_tolerance from its current picture and view end points.
+void set_picture_tolerance(Candidate& c, const Camera& camera, double length_tolerance);
 
 // Per-object facing: +1 front, -1 back, 0 edge-on, for each face.
 std::vector<std::int8_t> face_facing(const Solid& solid, const Camera& camera, double length_tolerance);

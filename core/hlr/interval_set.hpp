@@ -47,6 +47,12 @@ class IntervalSet {
     items_.resize(out);
     return items_;
   }
+  // Removes intervals for which is_negligible(lo, hi) holds (after normalising).
+  template <typename IsNegligible>
+  void drop(IsNegligible&& is_negligible) {
+    normalize();
+    std::erase_if(items_, [&](const Interval& iv) { return is_negligible(iv.lo, iv.hi); });
+  }
   // True when the (normalised) set covers [0, 1] entirely.
   bool covers_all() {
     normalize();

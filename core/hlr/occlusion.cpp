@@ -22,7 +22,8 @@ double view_param(const Candidate& c, const Camera& camera, double s) {
 
 void add_hidden_intervals(const FrameSetup& setup, const Camera& camera, const Candidate& c, const Occluder& o,
                           OcclusionScratch& scratch, IntervalSet& hidden) {
-  const double ltol = setup.length_tolerance, ptol = setup.picture_tolerance;
+  const double ltol = setup.length_tolerance;
+  const double ptol = std::max(c.picture_tolerance, o.picture_tolerance);
   // 1. Behind the plane: g(t) = eye_side·(n·v(t) + offset) < 0, linear in t.
   const double g0 = o.eye_side * (dot(o.normal, to_vector(c.view0)) + o.offset);
   const double g1 = o.eye_side * (dot(o.normal, to_vector(c.view1)) + o.offset);
@@ -49,8 +50,9 @@ void add_hidden_intervals(const FrameSetup& setup, const Camera& camera, const C
   breaks.clear();
   breaks.push_back(s_lo);
   breaks.push_back(s_hi);
-  const std::span<const Point2> pts(setup.polygon_points.data() + o.first_point,
-                                    setup.ring_ends[o.first_ring + o.ring_count - 1] - o.first_point);
+  const std::size_t point_count = setup.ring_ends[o.first_ring + o.ring_count - 1] - o.first_point;
+  const std::span<const Point2> pts(setup.polygon_points.data() + o.first_point, point_count);
+  const std::span<const std::uint8_t> seams(setup.polygon_seams.data() + o.first_point, point_count);
   std::uint32_t ends_buf[64];
   std::vector<std::uint32_t> ends_heap;
   std::uint32_t* ends = ends_buf;
@@ -89,7 +91,7 @@ void add_hidden_intervals(const FrameSetup& setup, const Camera& camera, const C
     const double s0 = breaks[i], s1 = breaks[i + 1];
     if (s1 <= s0) continue;
     const Point2 mid = lerp(a, b, 0.5 * (s0 + s1));
-    const bool inside = classify_point(pts, ring_ends, mid, ptol) == PointClass::Inside;
+    const bool inside = classify_point(pts, ring_ends, mid, ptol, seams) == PointClass::Inside;
     if (inside) {
       if (open_lo < 0) open_lo = s0;
       open_hi = s1;

@@ -58,7 +58,7 @@ struct Worker {
     seg.p1 = lerp(c.world0, c.world1, t1);
     seg.s0 = lerp(c.pic0, c.pic1, s0);
     seg.s1 = lerp(c.pic0, c.pic1, s1);
-    if (distance(seg.s0, seg.s1) <= setup.picture_tolerance) return;
+    if (distance(seg.s0, seg.s1) <= c.picture_tolerance) return;
     seg.object = c.object;
     seg.edge = c.edge;
     seg.other = c.other;
@@ -86,9 +86,12 @@ struct Worker {
     });
     // Hidden runs that meet up to rounding (across a shared face edge) are one run: the sliver between
     // them is not a visible piece.
-    hidden.close_gaps([&](double hi, double lo) {
-      return distance(picture_point(c, hi), picture_point(c, lo)) <= setup.picture_tolerance;
-    });
+    // A hidden run of negligible length (an edge grazing a face's outline) does not split what is seen.
+    auto negligible = [&](double t0, double t1) {
+      return distance(picture_point(c, t0), picture_point(c, t1)) <= c.picture_tolerance;
+    };
+    hidden.close_gaps(negligible);
+    hidden.drop(negligible);
     for (const Interval& v : hidden.complement()) emit(c, v.lo, v.hi, false, out);
     if (options.include_hidden)
       for (const Interval& h : hidden.normalize()) emit(c, h.lo, h.hi, true, out);
@@ -105,6 +108,7 @@ FrameResult render_frame(const Scene& scene, const Camera& camera, const HlrOpti
   Rect2 domain = Rect2::none();
   for (Candidate& c : setup.candidates) {
     if (!clip_to_frame(c, camera)) continue;
+    set_picture_tolerance(c, camera, setup.length_tolerance);
     domain.include(c.pic0);
     domain.include(c.pic1);
     setup.candidates[kept++] = c;

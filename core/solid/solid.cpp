@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <unordered_map>
 #include <utility>
 
 #include "core/solid/face_geometry.hpp"
@@ -25,6 +26,26 @@ Vector3 newell_normal(const std::vector<Point3>& vertices, const Ring& ring) {
   return n;
 }
 
+void link_ring_edges(Solid& solid) {
+  std::unordered_map<std::uint64_t, std::uint32_t> index;
+  index.reserve(solid.edges.size() * 2);
+  auto key = [](VertexIndex a, VertexIndex b) {
+    return (std::uint64_t{std::min(a, b)} << 32) | std::max(a, b);
+  };
+  for (std::uint32_t e = 0; e < solid.edges.size(); ++e)
+    if (solid.edges[e].kind != EdgeKind::Marking && solid.edges[e].kind != EdgeKind::Free)
+      index.emplace(key(solid.edges[e].v0, solid.edges[e].v1), e);
+  for (Face& f : solid.faces)
+    for (Ring& r : f.rings) {
+      const std::size_t n = r.vertices.size();
+      r.edges.assign(n, kNoEdge);
+      for (std::size_t i = 0; i < n; ++i) {
+        const auto it = index.find(key(r.vertices[i], r.vertices[(i + 1) % n]));
+        if (it != index.end()) r.edges[i] = it->second;
+      }
+    }
+}
+
 Solid Solid::transformed(const Affine3& worldFromObject) const {
   const double det = worldFromObject.determinant();
   if (det == 0 || !std::isfinite(det)) throw std::domain_error("transform is singular: it would flatten the solid");
@@ -41,7 +62,13 @@ Solid Solid::transformed(const Affine3& worldFromObject) const {
   out.faces = faces;
   if (mirror)
     for (Face& f : out.faces)
-      for (Ring& r : f.rings) std::reverse(r.vertices.begin(), r.vertices.end());
+      for (Ring& r : f.rings) {
+        // Reversed, edge j joins old vertices n−1−j and n−2−j: old edge (n−2−j) mod n.
+        std::reverse(r.vertices.begin(), r.vertices.end());
+        const std::vector<std::uint32_t> old = r.edges;
+        const std::size_t n = old.size();
+        for (std::size_t j = 0; j < n; ++j) r.edges[j] = old[(2 * n - 2 - j) % n];
+      }
 
   out.planes.reserve(out.faces.size());
   for (const Face& f : out.faces)

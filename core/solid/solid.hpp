@@ -15,15 +15,21 @@ namespace hlr {
 using VertexIndex = std::uint32_t;
 using FaceIndex = std::int32_t;  // -1 where there is no face
 inline constexpr FaceIndex kNoFace = -1;
+inline constexpr std::uint32_t kNoEdge = 0xffffffffu;
 
 // A closed loop of vertex indices (the closing edge back to the first vertex is implied).
 struct Ring {
   std::vector<VertexIndex> vertices;
+  // edges[i]: index into Solid::edges of the edge vertices[i]→vertices[i+1], so the engine can tell a
+  // face's outline from the seams it shares with its neighbours (kNoEdge if unknown). Filled by
+  // link_ring_edges().
+  std::vector<std::uint32_t> edges;
 };
 
 // A planar polygon. rings[0] is the outer boundary, counter-clockwise seen from outside (from the side
 // the normal points to); rings[1..] are holes, clockwise seen from outside. Containment is even-odd over
-// all rings, so a hole touching the outer ring at one vertex is fine.
+// all rings, so a hole touching the outer ring at one vertex is fine. (An island inside a hole is a
+// further ring, counter-clockwise again.)
 struct Face {
   std::vector<Ring> rings;
 };
@@ -66,6 +72,9 @@ struct Solid {
   // This solid moved by `worldFromObject` (any invertible affine map; a mirror keeps faces outward).
   Solid transformed(const Affine3& worldFromObject) const;
 };
+
+// Fills Ring::edges of every face from Solid::edges (the builder and transformed() call it).
+void link_ring_edges(Solid& solid);
 
 // Newell's normal of a ring (length = twice the area; direction by the right-hand rule).
 Vector3 newell_normal(const std::vector<Point3>& vertices, const Ring& ring);

@@ -156,6 +156,7 @@ SolidBuildResult SolidBuilder::build() const {
   lines.reserve(lines_.size());
   for (const LineInput& l : lines_) lines.push_back({l.a, l.b, l.tag});
   build_edge_table(solid, edges, faces, lines, vertices, options, diagnostics);
+  link_ring_edges(solid);
 
   if (!diagnostics.has_errors()) result.solid = std::move(solid);
   return result;
