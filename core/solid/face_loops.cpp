@@ -228,7 +228,7 @@ PreparedFace prepare_face(const std::vector<std::vector<std::string>>& input_rin
   std::vector<Ring> rings;
   std::vector<double> twice_area;
   for (Loop& l : split.rings) {
-    rings.push_back(Ring{std::move(l)});
+    rings.push_back(Ring{std::move(l), {}});
     twice_area.push_back(length(newell_normal(pos, rings.back())));
   }
   const auto outer = static_cast<std::size_t>(std::max_element(twice_area.begin(), twice_area.end()) - twice_area.begin());

@@ -23,7 +23,7 @@ struct Ring {
   // edges[i]: index into Solid::edges of the edge vertices[i]→vertices[i+1], so the engine can tell a
   // face's outline from the seams it shares with its neighbours (kNoEdge if unknown). Filled by
   // link_ring_edges().
-  std::vector<std::uint32_t> edges;
+  std::vector<std::uint32_t> edges = {};
 };
 
 // A planar polygon. rings[0] is the outer boundary, counter-clockwise seen from outside (from the side

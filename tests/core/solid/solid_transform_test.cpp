@@ -13,13 +13,13 @@ using namespace solid_test;
 
 TEST(SolidNewell, SquareAndTriangle) {
   const std::vector<Point3> v = {{0, 0, 5}, {2, 0, 5}, {2, 2, 5}, {0, 2, 5}};
-  const Vector3 n = newell_normal(v, Ring{{0, 1, 2, 3}});
+  const Vector3 n = newell_normal(v, Ring{{0, 1, 2, 3}, {}});
   EXPECT_EQ(n, Vector3(0, 0, 8));  // twice the area of the 2×2 square, right-handed
-  EXPECT_EQ(newell_normal(v, Ring{{3, 2, 1, 0}}), Vector3(0, 0, -8));
-  EXPECT_EQ(newell_normal(v, Ring{{0, 1}}), Vector3());
+  EXPECT_EQ(newell_normal(v, Ring{{3, 2, 1, 0}, {}}), Vector3(0, 0, -8));
+  EXPECT_EQ(newell_normal(v, Ring{{0, 1}, {}}), Vector3());
   // Far from the origin the result is still exact for exactly representable data.
   const std::vector<Point3> far = {{1e9, 1e9, 1e9}, {1e9 + 1, 1e9, 1e9}, {1e9, 1e9 + 1, 1e9}};
-  EXPECT_EQ(newell_normal(far, Ring{{0, 1, 2}}), Vector3(0, 0, 1));
+  EXPECT_EQ(newell_normal(far, Ring{{0, 1, 2}, {}}), Vector3(0, 0, 1));
 }
 
 Solid cube() {
