@@ -23,11 +23,12 @@ inline double distance2_to_segment(Point2 p, Point2 a, Point2 b) {
 }
 
 // points: all rings concatenated; ring_ends: exclusive end offset of each ring within `points`.
-// seam (optional, one flag per point): the edge from points[i] to the next is a seam the polygon shares
-// with a neighbour that continues it on the other side, so a point on it is inside the union, not on its
-// boundary.
-inline PointClass classify_point(std::span<const Point2> points, std::span<const std::uint32_t> ring_ends,
-                                 Point2 p, double tolerance, std::span<const std::uint8_t> seam = {}) {
+// is_seam(i): the edge from points[i] to the next is a seam the polygon shares with a neighbour that
+// continues it on the other side, so a point on it (away from its end vertices) is inside the union, not
+// on its boundary.
+template <typename IsSeam>
+PointClass classify_point(std::span<const Point2> points, std::span<const std::uint32_t> ring_ends, Point2 p,
+                          double tolerance, IsSeam&& is_seam) {
   const double tol2 = tolerance * tolerance;
   bool inside = false, on_seam = false;
   std::uint32_t begin = 0;
@@ -35,8 +36,13 @@ inline PointClass classify_point(std::span<const Point2> points, std::span<const
     for (std::uint32_t i = begin; i < end; ++i) {
       const Point2 a = points[i];
       const Point2 b = points[i + 1 < end ? i + 1 : begin];
-      if (distance2_to_segment(p, a, b) <= tol2) {
-        if (seam.empty() || !seam[i]) return PointClass::Boundary;
+      // Cheap reject first: farther than the tolerance from the edge's line (no division).
+      const Vector2 ab = b - a, ap = p - a;
+      const double c = cross(ab, ap);
+      if (c * c <= tol2 * dot(ab, ab) && distance2_to_segment(p, a, b) <= tol2) {
+        // A seam is covered along its length, but at its ends the neighbours around the vertex may be
+        // what is being tested: near a vertex the point stays on the boundary.
+        if (!is_seam(i) || dot(ap, ap) <= tol2 || dot(p - b, p - b) <= tol2) return PointClass::Boundary;
         on_seam = true;
       }
       // Half-open rule on y so a vertex on the ray is counted once.
@@ -48,6 +54,16 @@ inline PointClass classify_point(std::span<const Point2> points, std::span<const
     begin = end;
   }
   return (inside || on_seam) ? PointClass::Inside : PointClass::Outside;
+}
+
+}  // namespace hlr
+
+namespace hlr {
+
+// Without seams: every ring edge is outline.
+inline PointClass classify_point(std::span<const Point2> points, std::span<const std::uint32_t> ring_ends, Point2 p,
+                                 double tolerance) {
+  return classify_point(points, ring_ends, p, tolerance, [](std::uint32_t) { return false; });
 }
 
 }  // namespace hlr

@@ -31,8 +31,8 @@ Tolerance frame_tolerance(const Scene& scene, const Camera& camera) {
 // Sutherland–Hodgman against depth ≥ near, carrying each edge's seam flag. For a non-convex ring the
 // result may contain edges doubled along the clip line; containment is even-odd, so they cancel. Edges
 // along the clip line are outline, not seam.
-void clip_ring_to_near(const std::vector<Point3>& ring, const std::vector<std::uint8_t>& seam, double near,
-                       std::vector<Point3>& out, std::vector<std::uint8_t>& out_seam) {
+void clip_ring_to_near(const std::vector<Point3>& ring, const std::vector<FaceIndex>& seam, double near,
+                       std::vector<Point3>& out, std::vector<FaceIndex>& out_seam) {
   out.clear();
   out_seam.clear();
   const std::size_t n = ring.size();
@@ -46,7 +46,7 @@ void clip_ring_to_near(const std::vector<Point3>& ring, const std::vector<std::u
     }
     if (a_in != b_in) {
       out.push_back(lerp(a, b, (near - a.z) / (b.z - a.z)));
-      out_seam.push_back(a_in ? 0 : seam[i]);  // leaving: along the clip line; entering: rest of a→b
+      out_seam.push_back(a_in ? kNoFace : seam[i]);  // leaving: along the clip line; entering: rest of a→b
     }
   }
 }
@@ -63,7 +63,7 @@ void add_occluders(FrameSetup& setup, std::uint32_t object_index, const Solid& s
                    const std::vector<Point3>& view_vertices, const std::vector<std::int8_t>& facing, bool cull,
                    const Camera& camera) {
   std::vector<Point3> ring_points, clipped;
-  std::vector<std::uint8_t> ring_seams, clipped_seams;
+  std::vector<FaceIndex> ring_seams, clipped_seams;
   auto occludes = [&](FaceIndex f) { return f != kNoFace && facing[f] != 0 && !(cull && facing[f] < 0); };
   for (std::size_t f = 0; f < solid.faces.size(); ++f) {
     if (!occludes(static_cast<FaceIndex>(f))) continue;
@@ -100,16 +100,16 @@ void add_occluders(FrameSetup& setup, std::uint32_t object_index, const Solid& s
         ring_points.push_back(view_vertices[ring.vertices[i]]);
         // A seam: the neighbour across this edge also hides and faces the same way, so the two project
         // to opposite sides of the edge and together cover it.
-        std::uint8_t seam = 0;
+        FaceIndex seam = kNoFace;
         if (i < ring.edges.size() && ring.edges[i] != kNoEdge) {
           const SolidEdge& e = solid.edges[ring.edges[i]];
           const FaceIndex other = e.left == static_cast<FaceIndex>(f) ? e.right : e.left;
-          seam = other != static_cast<FaceIndex>(f) && occludes(other) && facing[other] == facing[f];
+          if (other != static_cast<FaceIndex>(f) && occludes(other) && facing[other] == facing[f]) seam = other;
         }
         ring_seams.push_back(seam);
       }
       const std::vector<Point3>* pts = &ring_points;
-      const std::vector<std::uint8_t>* seams = &ring_seams;
+      const std::vector<FaceIndex>* seams = &ring_seams;
       if (is_perspective(camera)) {
         clip_ring_to_near(ring_points, ring_seams, camera.near_depth, clipped, clipped_seams);
         pts = &clipped;

@@ -49,9 +49,9 @@ struct Candidate {
 struct FrameSetup {
   std::vector<Occluder> occluders;
   std::vector<Point2> polygon_points;     // all occluder rings, concatenated
-  // Per point: the ring edge starting there is a seam with a neighbouring occluder that continues the
-  // surface on the other side (same solid, same facing), so it is not an outline of what hides.
-  std::vector<std::uint8_t> polygon_seams;
+  // Per point: if the ring edge starting there is a seam — shared with a neighbouring occluder of the
+  // same solid that faces the same way, so the two cover it together — that neighbour's face, else kNoFace.
+  std::vector<FaceIndex> polygon_seams;
   std::vector<std::uint32_t> ring_ends;   // end offset (exclusive) of each ring in polygon_points
   std::vector<Candidate> candidates;
   double length_tolerance = 0;   // view-space

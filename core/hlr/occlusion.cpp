@@ -4,6 +4,7 @@
 #include <cmath>
 #include <span>
 
+#include "core/geometry/clip2d.hpp"
 #include "core/geometry/polygon2d.hpp"
 
 namespace hlr {
@@ -38,6 +39,11 @@ void add_hidden_intervals(const FrameSetup& setup, const Camera& camera, const C
   t_hi = std::clamp(t_hi, 0.0, 1.0);
   if (t_hi <= t_lo) return;
   const double s_lo = picture_param(c, camera, t_lo), s_hi = picture_param(c, camera, t_hi);
+  // Quick reject: the part behind the plane misses the polygon's bounds. (The range itself is not narrowed
+  // to the bounds: breaks there would put midpoints within the tolerance of the polygon's corners.)
+  const Rect2 box{o.bounds.xmin - ptol, o.bounds.ymin - ptol, o.bounds.xmax + ptol, o.bounds.ymax + ptol};
+  const auto over = clip_segment_to_rect(c.pic0, c.pic1, box);
+  if (!over || over->second < s_lo || over->first > s_hi) return;
 
   // 2. Inside the projected polygon: break the picture segment where it meets any ring edge or passes
   //    within the tolerance of a ring vertex, then classify each piece by its midpoint. Extra breaks are
@@ -52,7 +58,13 @@ void add_hidden_intervals(const FrameSetup& setup, const Camera& camera, const C
   breaks.push_back(s_hi);
   const std::size_t point_count = setup.ring_ends[o.first_ring + o.ring_count - 1] - o.first_point;
   const std::span<const Point2> pts(setup.polygon_points.data() + o.first_point, point_count);
-  const std::span<const std::uint8_t> seams(setup.polygon_seams.data() + o.first_point, point_count);
+  const FaceIndex* seams = setup.polygon_seams.data() + o.first_point;
+  // A seam covers a point only through the neighbour across it, which must not be the edge's own face.
+  auto is_seam = [&](std::uint32_t i) {
+    const FaceIndex n = seams[i];
+    return n != kNoFace && !(o.object == c.own_object0 && n == c.own_face0) &&
+           !(o.object == c.own_object1 && n == c.own_face1);
+  };
   std::uint32_t ends_buf[64];
   std::vector<std::uint32_t> ends_heap;
   std::uint32_t* ends = ends_buf;
@@ -73,13 +85,13 @@ void add_hidden_intervals(const FrameSetup& setup, const Camera& camera, const C
       // Ring vertex close to the segment's line: break at its foot.
       const double sp = dot(ap, r) / r2;
       if (std::abs(cross(r, ap)) <= ptol * rlen && sp > s_lo && sp < s_hi) breaks.push_back(sp);
+      // Proper crossing. A crossing at or near a ring vertex is also caught by the vertex test above, so
+      // u needs no margin; parallel edges have no crossing of their own.
       const double den = cross(r, e);
-      const double elen = length(e);
-      if (std::abs(den) <= ptol * elen * 1e-3 + 1e-300) continue;  // parallel: vertices handled above
+      if (den == 0) continue;
       const double s = cross(ap, e) / den;
       const double u = cross(ap, r) / den;
-      const double du = ptol / std::max(elen, 1e-300);
-      if (u >= -du && u <= 1 + du && s > s_lo && s < s_hi) breaks.push_back(s);
+      if (u >= 0 && u <= 1 && s > s_lo && s < s_hi) breaks.push_back(s);
     }
     begin = end;
   }
@@ -91,7 +103,7 @@ void add_hidden_intervals(const FrameSetup& setup, const Camera& camera, const C
     const double s0 = breaks[i], s1 = breaks[i + 1];
     if (s1 <= s0) continue;
     const Point2 mid = lerp(a, b, 0.5 * (s0 + s1));
-    const bool inside = classify_point(pts, ring_ends, mid, ptol, seams) == PointClass::Inside;
+    const bool inside = classify_point(pts, ring_ends, mid, ptol, is_seam) == PointClass::Inside;
     if (inside) {
       if (open_lo < 0) open_lo = s0;
       open_hi = s1;

@@ -162,17 +162,26 @@ double picture_extent(const Scene& scene, const Camera& camera, const FrameResul
     const Rect2& f = *camera.frame;
     return std::hypot(f.xmax - f.xmin, f.ymax - f.ymin);
   }
+  // Perspective without a frame: only what lies within 45° of the view axis counts, since points near the
+  // near plane far off-axis project arbitrarily far out and would make any relative tolerance useless.
+  auto counts = [&](Point3 world) {
+    if (camera.projection == Projection::Orthographic) return true;
+    const Point3 v = camera.view(world);
+    return v.z > camera.near_depth && std::abs(v.x) <= v.z && std::abs(v.y) <= v.z;
+  };
   constexpr double kInf = std::numeric_limits<double>::infinity();
   double x0 = kInf, y0 = kInf, x1 = -kInf, y1 = -kInf;
-  auto grow = [&](Point2 p) {
-    if (!std::isfinite(p.x) || !std::isfinite(p.y)) return;
+  auto grow = [&](Point3 world) {
+    if (!counts(world)) return;
+    const Point2 p = camera.project(world);
     x0 = std::min(x0, p.x), y0 = std::min(y0, p.y), x1 = std::max(x1, p.x), y1 = std::max(y1, p.y);
   };
-  for (const auto& s : result.segments) grow(s.s0), grow(s.s1);
+  for (const auto& s : result.segments) grow(s.p0), grow(s.p1);
   for (const auto& o : scene.objects)
-    for (const Point3& p : o.solid.vertices)
-      if (in_front(camera, p)) grow(camera.project(p));
-  return x0 <= x1 ? std::max(std::hypot(x1 - x0, y1 - y0), 1e-12) : 1.0;
+    for (const Point3& p : o.solid.vertices) grow(p);
+  const double extent = x0 <= x1 ? std::hypot(x1 - x0, y1 - y0) : 0.0;
+  // At least the 90° field itself (focal·[−1, 1]² for perspective).
+  return std::max(extent, camera.projection == Projection::Perspective ? 2 * std::abs(camera.focal) : 1e-12);
 }
 
 CheckReport check_drawn_not_hidden(const Scene& scene, const RayCaster& oracle, const FrameResult& result,
@@ -269,6 +278,8 @@ CheckReport check_visible_not_missing(const Scene& scene, const RayCaster& oracl
       const SolidEdge& edge = solid.edges[e];
       if (drawn_candidate(oracle, o, solid, edge) != Candidate::Yes) continue;
       const Point3 v0 = solid.vertices[edge.v0], v1 = solid.vertices[edge.v1];
+      // An edge seen (nearly) end-on is a point on the picture: nothing need be drawn.
+      if (in_front(cam, v0) && in_front(cam, v1) && distance(cam.project(v0), cam.project(v1)) < 10 * eps) continue;
       const auto it = pieces.find(key(o, e));
       for (int i = 0; i < options.edge_samples; ++i) {
         const double t = (i + 0.5) / options.edge_samples;

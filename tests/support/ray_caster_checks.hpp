@@ -4,7 +4,8 @@
 //       a drawable kind, and pieces of one edge do not overlap;
 //   (b) nothing visible is missing: samples along every drawn-candidate edge (Feature, Boundary, Marking,
 //       Free; Smooth only on the contour) that the oracle calls Visible and that lie inside the frame must
-//       be covered by a returned piece of that object and edge (picture distance < 1e-6 × picture extent);
+//       be covered by a returned piece of that object and edge (picture distance < 1e-6 × picture extent;
+//       edges seen end-on, shorter than 10 such distances on the picture, are skipped);
 //   (c) intersection lines: every Intersection piece lies on a face of both its objects and is not Hidden;
 //       and, between closed solids, every sampled point where two faces cross strictly inside both that the
 //       oracle calls Visible is covered by an Intersection piece of that pair of objects.
@@ -49,8 +50,8 @@ std::vector<Point3> segment_samples(const VisibleSegment& s);
 enum class Candidate { Yes, No, Ambiguous };
 Candidate drawn_candidate(const RayCaster& oracle, std::uint32_t object, const Solid& solid, const SolidEdge& e);
 
-// Picture-coordinate scale for coverage: the frame's diagonal, else the bounding box of the pieces and of
-// the projected vertices in front of the near plane.
+// Picture-coordinate scale for coverage: the frame's diagonal, else the bounding box of the pieces' ends
+// and the vertices (perspective: only those within 45° of the view axis, and at least the 90° field).
 double picture_extent(const Scene& scene, const Camera& camera, const FrameResult& result);
 
 CheckReport check_drawn_not_hidden(const Scene& scene, const RayCaster& oracle, const FrameResult& result,

@@ -1,9 +1,13 @@
 // Property tests of render_frame() against the brute-force ray-casting oracle (tests/support/ray_caster):
 // seeded random scenes — boxes, rotated boxes, L-blocks, stairs, interpenetrating boxes, plates with
-// holes, spheres, open and marked boxes, the eye close in and the near plane cutting solids — under
-// perspective and orthographic cameras, with and without a picture frame. Each seed is its own test
-// case and prints its scene and camera on failure; rerun one with
+// holes, spheres, tori, bumpy meshes, a small city on its ground plate, stacked and touching boxes, open
+// and marked boxes, edge-on faces, a cube lattice seen along its diagonal (exact coincidences on the
+// picture), sizes four orders of magnitude apart, the eye close in, inside a room, and the near plane
+// cutting solids — under perspective and orthographic cameras, with and without a (zoomed) picture frame.
+// Each seed is its own test case and prints its scene and camera on failure; rerun one with
 //   hlr_core_tests --gtest_filter='Seeds/HlrProperty.Random/17'
+// (Scenes are reproducible for a given compiler: the order in which function arguments draw random
+// numbers is unspecified in C++.)
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -32,7 +36,7 @@ enum Family {
   kBoxes, kRotated, kLBlocks, kStairs, kInterpenetrating, kPlates, kSphere, kCloseIn, kMixed,
   kTorus, kMesh, kCity, kStacked, kAxisView, kRoom, kLattice, kScales, kFamilies
 };
-// 20 seeds per family, 300 scenes: about 2 s in Release, 35 s under ASan+UBSan (Debug) on one core.
+// 20 seeds per family, 340 scenes: about 2 s in Release, 40 s under ASan+UBSan (Debug), on one core.
 constexpr int kSeeds = 20 * kFamilies;
 
 const char* family_name(int f) {
@@ -250,9 +254,10 @@ void build_scene(int family, Rng& r, Case& c, Point3& center, double& radius) {
       break;
     }
     case kScales: {
-      // A large block beside small ones four orders of magnitude smaller, the camera zoomed in on them:
-      // the tolerances must scale with the scene, not be absolute.
-      add(c, "big", gen::box({-100, 1, 0}, {100, 60, 40}));
+      // Small boxes on a slab four orders of magnitude larger, the camera close to them: the tolerances
+      // must scale with what is seen, not be absolute. The slab reaches far behind the eye, so the near
+      // plane clips it far off-axis.
+      add(c, "slab", gen::box({-100, -100, -20}, {100, 100, -0.002}));
       for (int i = 0; i < 4; ++i)
         add(c, "small" + std::to_string(i), random_box(r, {-0.05, -0.05, 0}, {0.03, 0.8, 0.03}, 0.01, 0.05));
       add(c, "tilted", gen::rotated_box({0, 0.5, 0.05}, {0.1, 0.02, 0.04}, r.direction(), r(0, 180)));
@@ -346,16 +351,19 @@ TEST_P(HlrProperty, Random) {
   const FrameResult result = render_frame(c.scene, c.camera);
   const CheckReport report = check_frame(c.scene, c.camera, result);
   EXPECT_TRUE(report.ok()) << report.summary();
-  // The checks must not be vacuous: something is visible and judged.
-  if (!c.zoomed) {
+  // The checks must not be vacuous: something is visible and judged. (Zoomed views, and eyes that may
+  // stand inside furniture or face a wall through a frame, can legitimately see nothing.)
+  const int family = static_cast<int>(seed % kFamilies);
+  if (!c.zoomed && family != kRoom && family != kCloseIn) {
     EXPECT_GT(report.edge_visible, 0u) << report.summary();
     EXPECT_GT(report.drawn_samples, 0u) << report.summary();
   }
   // Ambiguity is for degenerate configurations; a random scene should be decidable almost everywhere.
   // (The close-in views are degenerate by design: rays at grazing angles meet the near plane where it
   // cuts the face beside the eye.)
-  const int family = static_cast<int>(seed % kFamilies);
-  if (family != kCloseIn && family != kAxisView && family != kLattice) {
+  // In the sizes family the oracle's tol (1e-6 of the 280-unit slab) is 1–3% of the small boxes, so many
+  // of their samples are Ambiguous by design.
+  if (family != kCloseIn && family != kAxisView && family != kLattice && family != kScales) {
     EXPECT_LT(report.drawn_ambiguous, report.drawn_samples / 4 + 8) << report.summary();
   }
   if (HasFailure() || std::getenv("HLR_PROPERTY_VERBOSE")) std::cout << "seed " << seed << ": " << report.summary() << "\n";
@@ -482,6 +490,54 @@ TEST(HlrPropertyOracle, ChecksCatchInjectedErrors) {
   FrameResult twice = visible;
   twice.segments.push_back(visible.segments.front());
   EXPECT_FALSE(check_frame(scene, camera, twice).ok());
+}
+
+
+// ---- minimal reproductions of engine bugs the random scenes found (kept as regression tests) -----------
+
+// Found by seeds 32, 66, 134, 168, 236, 253, 270, 304, 321 (cube lattice). An edge whose picture coincides
+// with an edge between two front faces of an occluder lies on the boundary of both faces' projections, and
+// each face treats its boundary band as "not hidden" — so the edge is drawn although the sight line passes
+// through the occluder's interior. Here a cube sits exactly behind another along the view direction: the
+// three edges of its nearest corner project onto the front cube's three front edges and are drawn.
+TEST(HlrEngineRepro, EdgeBehindAnOccludersInteriorEdgeIsHidden) {
+  for (const bool ortho : {true, false}) {
+    SCOPED_TRACE(ortho ? "isometric ortho" : "perspective");
+    const Point3 eye{5, -5, 5};
+    Scene scene;
+    scene.objects.push_back({"front", gen::box({0, 0, 0}, {1, 1, 1})});
+    // Ortho: "front" moved by −2·(1, −1, 1) along the view; perspective: "front" scaled by 2 about the eye.
+    scene.objects.push_back({"behind", ortho ? gen::box({-2, 2, -2}, {-1, 3, -1})
+                                             : gen::box(eye + 2.0 * (Point3{0, 0, 0} - eye),
+                                                        eye + 2.0 * (Point3{1, 1, 1} - eye))});
+    const Camera camera = ortho ? ortho_camera(OrthoParameters{eye, {0, 0, 0}, {0, 0, 1}, 6, 0})
+                                : lookat_camera(LookatParameters{eye, {0, 0, 0}, {0, 0, 1}, 40, 0, 0});
+    // (Its six silhouette edges coincide with the front cube's silhouette: Ambiguous, not judged.)
+    const FrameResult result = render_frame(scene, camera);
+    const CheckReport report = check_frame(scene, camera, result);
+    EXPECT_TRUE(report.ok()) << report.summary();
+  }
+}
+
+// Found by seeds 152, 254, 322 of the sizes family (then with a 200 × 59 × 40 block beside the boxes). Without a frame the engine's picture tolerance is
+// 1e-9 × the largest |picture coordinate| of any candidate; geometry clipped at the near plane far off-axis
+// projects to ~focal·size/near (here ~3e8), so the tolerance grows to ~0.3 picture units and small, nearby
+// objects lose whole edges (pieces shorter than it are dropped) and show hidden parts. The tolerance should
+// not depend on how far off-axis the near plane clips something.
+TEST(HlrEngineRepro, GeometryClippedFarOffAxisDoesNotCoarsenThePicture) {
+  Scene scene;
+  scene.objects.push_back({"A", gen::box({0, 0, 0}, {0.04, 0.04, 0.04})});
+  scene.objects.push_back({"B", gen::box({0.005, -0.1, 0.0}, {0.02, -0.08, 0.03})});  // hides part of A
+  // Mostly behind the eye; its far side reaches in front of the near plane about 90° off the view axis.
+  scene.objects.push_back({"big", gen::box({-100, -60, 0}, {100, -1, 40})});
+  const Camera camera = lookat_camera(LookatParameters{{-0.05, -0.3, 0.1}, {0.02, 0.02, 0.02}, {0, 0, 1}, 40, 0, 1e-6});
+  const FrameResult result = render_frame(scene, camera);
+  const CheckReport report = check_frame(scene, camera, result);
+  EXPECT_TRUE(report.ok()) << report.summary();
+  // Without the big block the same two boxes come out right.
+  scene.objects.pop_back();
+  const FrameResult alone = render_frame(scene, camera);
+  EXPECT_TRUE(check_frame(scene, camera, alone).ok()) << check_frame(scene, camera, alone).summary();
 }
 
 }  // namespace
