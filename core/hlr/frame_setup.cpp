@@ -1,7 +1,9 @@
 #include "core/hlr/frame_setup.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
+#include <thread>
 
 #include "core/hlr/intersection_lines.hpp"
 #include "core/tolerance.hpp"
@@ -139,88 +141,83 @@ void set_picture_tolerance(Candidate& c, const Camera& camera, double length_tol
   c.picture_tolerance = Tolerance::picture(max_abs, camera.focal, length_tolerance, depth);
 }
 
-std::vector<std::int8_t> face_facing(const Solid& solid, const Camera& camera, double length_tolerance) {
-  std::vector<std::int8_t> facing(solid.faces.size(), 0);
-  const bool persp = is_perspective(camera);
-  const Point3 eye = persp ? camera.eye_world() : Point3{};
-  const Vector3 dir = camera.direction_world();
+namespace {
+
+struct ViewSide {
+  bool perspective = true;
+  Point3 eye{};      // world eye (perspective)
+  Vector3 direction{};  // world viewing direction
+};
+
+// Per face: +1 front, −1 back, 0 edge-on.
+void face_facing(const Solid& solid, const ViewSide& view, double length_tolerance, std::vector<std::int8_t>& facing) {
+  facing.assign(solid.faces.size(), 0);
   for (std::size_t f = 0; f < solid.faces.size(); ++f) {
     const Vector3 n = solid.planes[f].normal;
     double s, tol;
-    if (persp) {
+    if (view.perspective) {
       // Measured from a vertex of the face, not through the plane's offset: no cancellation far from
       // the origin.
-      s = dot(n, eye - solid.vertices[solid.faces[f].rings[0].vertices[0]]);
+      s = dot(n, view.eye - solid.vertices[solid.faces[f].rings[0].vertices[0]]);
       tol = length_tolerance;
     } else {
-      s = -dot(n, dir);
+      s = -dot(n, view.direction);
       tol = Tolerance::kRelative;
     }
     facing[f] = s > tol ? 1 : (s < -tol ? -1 : 0);
   }
-  return facing;
 }
 
-FrameSetup prepare_frame(const Scene& scene, const Camera& camera, bool intersection_lines, bool keep_culled) {
-  FrameSetup setup;
-  setup.length_tolerance = frame_tolerance(scene, camera).length;
-  const bool persp = is_perspective(camera);
-
-  std::vector<std::vector<std::int8_t>> facing(scene.objects.size());
-  std::vector<char> cull(scene.objects.size(), 0);
-  std::vector<Point3> view_vertices;
-  for (std::uint32_t o = 0; o < scene.objects.size(); ++o) {
-    const Solid& solid = scene.objects[o].solid;
-    view_vertices.resize(solid.vertices.size());
-    for (std::size_t i = 0; i < solid.vertices.size(); ++i) view_vertices[i] = camera.view(solid.vertices[i]);
-    facing[o] = face_facing(solid, camera, setup.length_tolerance);
-    cull[o] = solid.closed && wholly_in_front(view_vertices, camera, setup.length_tolerance);
-    add_occluders(setup, o, solid, view_vertices, facing[o], cull[o], camera);
-
-    for (std::uint32_t e = 0; e < solid.edges.size(); ++e) {
-      const SolidEdge& edge = solid.edges[e];
-      const int fl = edge.left >= 0 ? facing[o][edge.left] : 0;
-      const int fr = edge.right >= 0 ? facing[o][edge.right] : 0;
-      bool culled = false;
-      switch (edge.kind) {
-        case EdgeKind::Flat:
-          continue;
-        case EdgeKind::Smooth:
-          if ((fl > 0) == (fr > 0)) continue;  // not on the contour
-          [[fallthrough]];
-        case EdgeKind::Feature: {
-          const int front = (fl > 0) + (fr > 0);
-          culled = cull[o] && (front == 0 || (edge.concave && front == 1));
-          break;
-        }
-        case EdgeKind::Marking:
-          culled = cull[o] && fl <= 0;
-          break;
-        case EdgeKind::Boundary:
-        case EdgeKind::Free:
-          break;
+// Which edges of one object are candidates, and whether the back-face rules alone hide them.
+void add_edge_candidates(FrameSetup& part, std::uint32_t o, const Solid& solid,
+                         const std::vector<Point3>& view_vertices, const std::vector<std::int8_t>& facing, bool cull,
+                         bool keep_culled) {
+  for (std::uint32_t e = 0; e < solid.edges.size(); ++e) {
+    const SolidEdge& edge = solid.edges[e];
+    const int fl = edge.left >= 0 ? facing[edge.left] : 0;
+    const int fr = edge.right >= 0 ? facing[edge.right] : 0;
+    bool culled = false;
+    switch (edge.kind) {
+      case EdgeKind::Flat:
+        continue;
+      case EdgeKind::Smooth:
+        if ((fl > 0) == (fr > 0)) continue;  // not on the contour
+        [[fallthrough]];
+      case EdgeKind::Feature: {
+        const int front = (fl > 0) + (fr > 0);
+        culled = cull && (front == 0 || (edge.concave && front == 1));
+        break;
       }
-      if (culled && !keep_culled) continue;
-      Candidate c;
-      c.object = o;
-      c.edge = e;
-      c.own_object0 = c.own_object1 = o;
-      c.own_face0 = edge.left;
-      c.own_face1 = edge.right;
-      c.world0 = solid.vertices[edge.v0];
-      c.world1 = solid.vertices[edge.v1];
-      c.view0 = view_vertices[edge.v0];
-      c.view1 = view_vertices[edge.v1];
-      c.culled = culled;
-      setup.candidates.push_back(c);
+      case EdgeKind::Marking:
+        culled = cull && fl <= 0;
+        break;
+      case EdgeKind::Boundary:
+      case EdgeKind::Free:
+        break;
     }
+    if (culled && !keep_culled) continue;
+    Candidate c;
+    c.object = o;
+    c.edge = e;
+    c.own_object0 = c.own_object1 = o;
+    c.own_face0 = edge.left;
+    c.own_face1 = edge.right;
+    c.world0 = solid.vertices[edge.v0];
+    c.world1 = solid.vertices[edge.v1];
+    c.view0 = view_vertices[edge.v0];
+    c.view1 = view_vertices[edge.v1];
+    c.culled = culled;
+    part.candidates.push_back(c);
   }
-  if (intersection_lines) add_intersection_candidates(scene, camera, facing, cull, setup.length_tolerance, keep_culled, setup);
+}
 
-  // Near-plane clipping of the candidates (Desens' ALTER), then projection.
-  std::size_t kept = 0;
-  for (Candidate& c : setup.candidates) {
-    if (persp) {
+// Near-plane clipping of candidates[from..] (Desens' ALTER), projection and tolerances; drops what lies
+// wholly behind the near plane.
+void clip_and_project(FrameSetup& part, std::size_t from, const Camera& camera, double length_tolerance) {
+  std::size_t kept = from;
+  for (std::size_t i = from; i < part.candidates.size(); ++i) {
+    Candidate c = part.candidates[i];
+    if (is_perspective(camera)) {
       const double near = camera.near_depth;
       const double z0 = c.view0.z, z1 = c.view1.z;
       if (z0 < near && z1 < near) continue;
@@ -240,18 +237,87 @@ FrameSetup prepare_frame(const Scene& scene, const Camera& camera, bool intersec
     }
     c.pic0 = camera.project_view(c.view0);
     c.pic1 = camera.project_view(c.view1);
-    setup.picture_bounds.include(c.pic0);
-    setup.picture_bounds.include(c.pic1);
-    setup.candidates[kept++] = c;
+    set_picture_tolerance(c, camera, length_tolerance);
+    part.picture_bounds.include(c.pic0);
+    part.picture_bounds.include(c.pic1);
+    part.candidates[kept++] = c;
   }
-  setup.candidates.resize(kept);
+  part.candidates.resize(kept);
+}
 
-  for (Candidate& c : setup.candidates) set_picture_tolerance(c, camera, setup.length_tolerance);
-  for (Occluder& o : setup.occluders) {
-    const Rect2& b = o.bounds;
-    const double max_abs = std::max({std::abs(b.xmin), std::abs(b.xmax), std::abs(b.ymin), std::abs(b.ymax)});
-    o.picture_tolerance =
-        Tolerance::picture(max_abs, camera.focal, setup.length_tolerance, persp ? o.min_depth : 1.0);
+// Appends `part` (whose offsets are its own) to `setup`.
+void append(FrameSetup& setup, FrameSetup&& part) {
+  const auto point_base = static_cast<std::uint32_t>(setup.polygon_points.size());
+  const auto ring_base = static_cast<std::uint32_t>(setup.ring_ends.size());
+  setup.polygon_points.insert(setup.polygon_points.end(), part.polygon_points.begin(), part.polygon_points.end());
+  setup.polygon_seams.insert(setup.polygon_seams.end(), part.polygon_seams.begin(), part.polygon_seams.end());
+  for (std::uint32_t end : part.ring_ends) setup.ring_ends.push_back(end + point_base);
+  for (Occluder o : part.occluders) {
+    o.first_point += point_base;
+    o.first_ring += ring_base;
+    setup.occluders.push_back(o);
+  }
+  setup.candidates.insert(setup.candidates.end(), part.candidates.begin(), part.candidates.end());
+  if (!part.picture_bounds.empty()) {
+    setup.picture_bounds.include({part.picture_bounds.xmin, part.picture_bounds.ymin});
+    setup.picture_bounds.include({part.picture_bounds.xmax, part.picture_bounds.ymax});
+  }
+}
+
+}  // namespace
+
+FrameSetup prepare_frame(const Scene& scene, const Camera& camera, bool intersection_lines, bool keep_culled,
+                         unsigned threads) {
+  FrameSetup setup;
+  setup.length_tolerance = frame_tolerance(scene, camera).length;
+  const double ltol = setup.length_tolerance;
+  const ViewSide view{is_perspective(camera), is_perspective(camera) ? camera.eye_world() : Point3{},
+                      camera.direction_world()};
+
+  // Objects are independent: chunks of them are prepared in parallel into parts of their own, joined in
+  // order afterwards, so the result does not depend on the number of threads.
+  const std::size_t n = scene.objects.size();
+  std::vector<std::vector<std::int8_t>> facing(n);
+  std::vector<char> cull(n, 0);
+  const std::size_t chunk = std::max<std::size_t>(1, n / 64);
+  const std::size_t chunks = (n + chunk - 1) / chunk;
+  std::vector<FrameSetup> parts(chunks);
+  std::atomic<std::size_t> next{0};
+  auto run = [&] {
+    std::vector<Point3> view_vertices;
+    for (std::size_t k; (k = next.fetch_add(1)) < chunks;) {
+      FrameSetup& part = parts[k];
+      for (std::size_t o = k * chunk; o < std::min(n, (k + 1) * chunk); ++o) {
+        const Solid& solid = scene.objects[o].solid;
+        view_vertices.resize(solid.vertices.size());
+        for (std::size_t i = 0; i < solid.vertices.size(); ++i) view_vertices[i] = camera.view(solid.vertices[i]);
+        face_facing(solid, view, ltol, facing[o]);
+        cull[o] = solid.closed && wholly_in_front(view_vertices, camera, ltol);
+        const auto index = static_cast<std::uint32_t>(o);
+        add_occluders(part, index, solid, view_vertices, facing[o], cull[o], camera);
+        add_edge_candidates(part, index, solid, view_vertices, facing[o], cull[o], keep_culled);
+      }
+      clip_and_project(part, 0, camera, ltol);
+      for (Occluder& occ : part.occluders) {
+        const Rect2& b = occ.bounds;
+        const double max_abs = std::max({std::abs(b.xmin), std::abs(b.xmax), std::abs(b.ymin), std::abs(b.ymax)});
+        occ.picture_tolerance = Tolerance::picture(max_abs, camera.focal, ltol, view.perspective ? occ.min_depth : 1.0);
+      }
+    }
+  };
+  threads = std::min<std::size_t>(threads ? threads : std::max(1u, std::thread::hardware_concurrency()), chunks);
+  if (threads <= 1) {
+    run();
+  } else {
+    std::vector<std::jthread> pool;
+    for (unsigned t = 0; t < threads; ++t) pool.emplace_back(run);
+  }
+  for (FrameSetup& part : parts) append(setup, std::move(part));
+
+  if (intersection_lines) {
+    const std::size_t from = setup.candidates.size();
+    add_intersection_candidates(scene, camera, facing, cull, ltol, keep_culled, setup);
+    clip_and_project(setup, from, camera, ltol);
   }
   return setup;
 }

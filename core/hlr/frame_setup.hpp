@@ -61,10 +61,9 @@ struct FrameSetup {
 // Sets c.picture_tolerance from its current picture and view end points.
 void set_picture_tolerance(Candidate& c, const Camera& camera, double length_tolerance);
 
-// Per-object facing: +1 front, -1 back, 0 edge-on, for each face.
-std::vector<std::int8_t> face_facing(const Solid& solid, const Camera& camera, double length_tolerance);
-
 // Culled candidates (hidden by the back-face rules alone) are kept only when `keep_culled` is set.
-FrameSetup prepare_frame(const Scene& scene, const Camera& camera, bool intersection_lines, bool keep_culled);
+// Objects are prepared on up to `threads` threads (0: all hardware threads).
+FrameSetup prepare_frame(const Scene& scene, const Camera& camera, bool intersection_lines, bool keep_culled,
+                         unsigned threads = 0);
 
 }  // namespace hlr

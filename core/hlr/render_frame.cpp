@@ -101,7 +101,7 @@ struct Worker {
 }  // namespace
 
 FrameResult render_frame(const Scene& scene, const Camera& camera, const HlrOptions& options) {
-  FrameSetup setup = prepare_frame(scene, camera, options.intersection_lines, options.include_hidden);
+  FrameSetup setup = prepare_frame(scene, camera, options.intersection_lines, options.include_hidden, options.threads);
 
   // Only what lies inside the picture frame is examined.
   std::size_t kept = 0;
