@@ -312,7 +312,10 @@ FrameSetup prepare_frame(const Scene& scene, const Camera& camera, bool intersec
     std::vector<std::jthread> pool;
     for (unsigned t = 0; t < threads; ++t) pool.emplace_back(run);
   }
-  for (FrameSetup& part : parts) append(setup, std::move(part));
+  for (FrameSetup& part : parts) {
+    append(setup, std::move(part));
+    part = FrameSetup{};  // release as we go: peak memory stays near one copy
+  }
 
   if (intersection_lines) {
     const std::size_t from = setup.candidates.size();
