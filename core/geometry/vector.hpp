@@ -50,11 +50,21 @@ constexpr double dot(Vector3 a, Vector3 b) { return a.x * b.x + a.y * b.y + a.z 
 constexpr Vector3 cross(Vector3 a, Vector3 b) {
   return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
 }
-inline double length(Vector3 v) { return std::sqrt(dot(v, v)); }
+// Scaled by the largest component, so it neither overflows beyond 1e154 nor underflows below 1e-154.
+inline double length(Vector3 v) {
+  const double m = std::fmax(std::fabs(v.x), std::fmax(std::fabs(v.y), std::fabs(v.z)));
+  if (!(m > 0) || !std::isfinite(m)) return m;
+  const Vector3 u{v.x / m, v.y / m, v.z / m};
+  return m * std::sqrt(dot(u, u));
+}
 inline double distance(Point3 a, Point3 b) { return length(a - b); }
+// Scaled by the largest component first, so vectors beyond 1e154 (whose squared length would overflow)
+// or below 1e-154 (underflow) normalise too.
 inline Vector3 normalize(Vector3 v) {
-  const double l = length(v);
-  return l > 0 ? v / l : Vector3{};
+  const double m = std::fmax(std::fabs(v.x), std::fmax(std::fabs(v.y), std::fabs(v.z)));
+  if (!(m > 0) || !std::isfinite(m)) return Vector3{};
+  const Vector3 u = v / m;
+  return u / std::sqrt(dot(u, u));
 }
 constexpr Vector3 to_vector(Point3 p) { return {p.x, p.y, p.z}; }
 constexpr Point3 to_point(Vector3 v) { return {v.x, v.y, v.z}; }

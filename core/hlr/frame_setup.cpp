@@ -128,7 +128,13 @@ void add_occluders(FrameSetup& setup, std::uint32_t object_index, const Solid& s
       setup.ring_ends.push_back(static_cast<std::uint32_t>(setup.polygon_points.size()));
       ++occ.ring_count;
     }
-    if (occ.ring_count == 0) continue;
+    if (occ.ring_count == 0 || !std::isfinite(occ.bounds.width() + occ.bounds.height() + occ.offset)) {
+      // Nothing in front of the near plane, or coordinates beyond double range: it hides nothing.
+      setup.polygon_points.resize(occ.first_point);
+      setup.polygon_seams.resize(occ.first_point);
+      setup.ring_ends.resize(occ.first_ring);
+      continue;
+    }
     setup.occluders.push_back(occ);
   }
 }
@@ -237,6 +243,8 @@ void clip_and_project(FrameSetup& part, std::size_t from, const Camera& camera, 
     }
     c.pic0 = camera.project_view(c.view0);
     c.pic1 = camera.project_view(c.view1);
+    // Coordinates near the limits of double overflow; such a piece cannot be drawn or compared.
+    if (!std::isfinite(c.pic0.x + c.pic0.y + c.pic1.x + c.pic1.y + c.view0.z + c.view1.z)) continue;
     set_picture_tolerance(c, camera, length_tolerance);
     part.picture_bounds.include(c.pic0);
     part.picture_bounds.include(c.pic1);
