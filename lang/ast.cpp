@@ -1,0 +1,213 @@
+// Names of operators and S-expression dumps of the AST (tests, REPL `:ast`, debugging).
+#include "lang/ast.hpp"
+
+#include <charconv>
+#include <string>
+
+namespace hlr::lang {
+
+const char* to_string(UnaryOp op) { return op == UnaryOp::Negate ? "-" : "not"; }
+
+const char* to_string(BinaryOp op) {
+  switch (op) {
+    case BinaryOp::Then:
+      return "then";
+    case BinaryOp::Or:
+      return "or";
+    case BinaryOp::And:
+      return "and";
+    case BinaryOp::Eq:
+      return "==";
+    case BinaryOp::Ne:
+      return "!=";
+    case BinaryOp::Lt:
+      return "<";
+    case BinaryOp::Le:
+      return "<=";
+    case BinaryOp::Gt:
+      return ">";
+    case BinaryOp::Ge:
+      return ">=";
+    case BinaryOp::Range:
+      return "..";
+    case BinaryOp::Add:
+      return "+";
+    case BinaryOp::Sub:
+      return "-";
+    case BinaryOp::Mul:
+      return "*";
+    case BinaryOp::Div:
+      return "/";
+    case BinaryOp::Mod:
+      return "%";
+  }
+  return "?";
+}
+
+namespace {
+
+template <class... F>
+struct Overloaded : F... {
+  using F::operator()...;
+};
+template <class... F>
+Overloaded(F...) -> Overloaded<F...>;
+
+std::string number_text(double value) {
+  char buffer[64];
+  const auto result = std::to_chars(buffer, buffer + sizeof buffer, value);
+  return std::string(buffer, result.ptr);
+}
+
+std::string quoted(const std::string& text) {
+  std::string out = "\"";
+  for (const char c : text) {
+    if (c == '"' || c == '\\') out += '\\';
+    if (c == '\n') {
+      out += "\\n";
+      continue;
+    }
+    out += c;
+  }
+  return out + "\"";
+}
+
+std::string ids_text(const std::vector<VertexId>& ids) {
+  std::string out;
+  for (const auto& id : ids) out += " " + id.text;
+  return out;
+}
+
+std::string block_text(const Block& block) {
+  std::string out = "(block";
+  for (const auto& stmt : block.statements) out += " " + dump(stmt);
+  return out + ")";
+}
+
+std::string paper_text(const PaperSpec& paper) {
+  std::string out;
+  if (paper.size) out += " " + paper.size->text;
+  if (paper.orientation == Orientation::Landscape) out += " landscape";
+  if (paper.orientation == Orientation::Portrait) out += " portrait";
+  return out;
+}
+
+std::string item_text(const SolidItem& item) {
+  return std::visit(
+      Overloaded{
+          [](const VertexDecl& v) { return "(vertex " + v.id.text + " " + dump(*v.position) + ")"; },
+          [](const FaceDecl& f) {
+            std::string out = "(face" + ids_text(f.ids);
+            for (const auto& hole : f.holes) out += " (hole" + ids_text(hole.ids) + ")";
+            return out + ")";
+          },
+          [](const LineDecl& l) { return "(line " + l.from.text + " " + l.to.text + ")"; },
+      },
+      item.node);
+}
+
+}  // namespace
+
+std::string dump(const Expr& expr) {
+  return std::visit(
+      Overloaded{
+          [](const NumberLit& n) { return number_text(n.value); },
+          [](const BoolLit& b) { return std::string(b.value ? "true" : "false"); },
+          [](const StringLit& s) {
+            if (s.is_plain()) return quoted(s.plain_text());
+            std::string out = "(str";
+            for (const auto& part : s.parts) {
+              if (!part.expr) {
+                out += " " + quoted(part.text);
+              } else {
+                out += " (fmt " + dump(*part.expr) + (part.format.empty() ? "" : " " + quoted(part.format)) +
+                       ")";
+              }
+            }
+            return out + ")";
+          },
+          [](const VectorLit& v) {
+            return "(vec " + dump(*v.components[0]) + " " + dump(*v.components[1]) + " " +
+                   dump(*v.components[2]) + ")";
+          },
+          [](const ListLit& l) {
+            std::string out = "(list";
+            for (const auto& item : l.items) out += " " + dump(*item);
+            return out + ")";
+          },
+          [](const NameRef& n) { return n.name; },
+          [](const UnaryExpr& u) {
+            return std::string("(") + to_string(u.op) + " " + dump(*u.operand) + ")";
+          },
+          [](const BinaryExpr& b) {
+            return std::string("(") + to_string(b.op) + " " + dump(*b.lhs) + " " + dump(*b.rhs) + ")";
+          },
+          [](const CallExpr& c) {
+            std::string out = "(call " + dump(*c.callee);
+            for (const auto& arg : c.args)
+              out += " " + (arg.label ? arg.label->text + ":" : "") + dump(*arg.value);
+            return out + ")";
+          },
+          [](const MemberExpr& m) { return "(. " + dump(*m.object) + " " + m.member.text + ")"; },
+          [](const IndexExpr& i) { return "(index " + dump(*i.object) + " " + dump(*i.index) + ")"; },
+      },
+      expr.node);
+}
+
+std::string dump(const Stmt& stmt) {
+  return std::visit(
+      Overloaded{
+          [](const SolidStmt& s) {
+            std::string out = "(solid " + s.name.text;
+            for (const auto& item : s.items) out += " " + item_text(item);
+            return out + ")";
+          },
+          [](const LetStmt& s) { return "(let " + s.name.text + " " + dump(*s.value) + ")"; },
+          [](const DefStmt& s) {
+            std::string out = "(def " + s.name.text + " (";
+            for (std::size_t i = 0; i < s.params.size(); ++i) {
+              out += (i ? " " : "") + s.params[i].name.text;
+              if (s.params[i].default_value) out += "=" + dump(*s.params[i].default_value);
+            }
+            out += ") ";
+            return out + (s.body ? block_text(*s.body) : dump(*s.value)) + ")";
+          },
+          [](const ReturnStmt& s) {
+            return s.value ? "(return " + dump(*s.value) + ")" : std::string("(return)");
+          },
+          [](const ForStmt& s) {
+            return "(for " + s.variable.text + " " + dump(*s.iterable) + " " + block_text(s.body) + ")";
+          },
+          [](const IfStmt& s) {
+            std::string out = "(if " + dump(*s.condition) + " " + block_text(s.then_block);
+            if (s.else_block) out += " " + block_text(*s.else_block);
+            return out + ")";
+          },
+          [](const DrawStmt& s) {
+            return "(draw " + dump(*s.object) + (s.transform ? " at " + dump(*s.transform) : "") + ")";
+          },
+          [](const CameraStmt& s) { return "(camera " + s.name.text + " " + dump(*s.value) + ")"; },
+          [](const AnimateStmt& s) {
+            return "(animate " + dump(*s.frames) + (s.fps ? " fps " + dump(*s.fps) : "") + ")";
+          },
+          [](const OutputStmt& s) { return "(output " + dump(*s.pattern) + paper_text(s.paper) + ")"; },
+          [](const PaperStmt& s) { return "(paper" + paper_text(s.paper) + ")"; },
+          [](const StyleStmt& s) { return "(style " + s.property.text + " " + s.value.text + ")"; },
+          [](const IncludeStmt& s) { return "(include " + quoted(s.path) + ")"; },
+      },
+      stmt.node);
+}
+
+std::string dump(const Script& script) {
+  std::string out;
+  for (const auto& stmt : script.statements) out += dump(stmt) + "\n";
+  return out;
+}
+
+const char* statement_keyword(const Stmt& stmt) {
+  static constexpr const char* names[] = {"solid",  "let",     "def",    "return", "for",   "if",     "draw",
+                                          "camera", "animate", "output", "paper",  "style", "include"};
+  return names[stmt.node.index()];
+}
+
+}  // namespace hlr::lang

@@ -1,0 +1,234 @@
+// The typed syntax tree of an hlrscript file. Parse once, evaluate per frame: the runtime walks these
+// nodes (std::visit over `node`) and never sees text again. Every node carries the SourceSpan of its
+// text, so any later error (unknown name, bad argument, non-planar face) can point at the script.
+//
+// Representation: one struct per construct, gathered in two closed sums, `Expr` and `Stmt`, each a
+// span plus a std::variant. Children are owned (std::unique_ptr<Expr> where an Expr holds an Expr),
+// so a Script is move-only and its node addresses are stable once parsing has finished: the runtime
+// may keep pointers into it (function bodies) as long as it keeps the Script.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "lang/source.hpp"
+
+namespace hlr::lang {
+
+struct Expr;
+using ExprPtr = std::unique_ptr<Expr>;
+
+// A name as written, with its place: a declared name, a parameter, a named argument's label.
+struct Name {
+  std::string text;
+  SourceSpan span;
+};
+
+// ---- expressions -------------------------------------------------------------------------------
+
+struct NumberLit {
+  double value = 0;
+  bool integer = false;  // written without '.' or exponent: "48", not "48.0"
+};
+struct BoolLit {
+  bool value = false;
+};
+// A piece of a string literal: plain text (escapes resolved) or an interpolation {expr:format}.
+struct StringPart {
+  std::string text;    // plain text when `expr` is null
+  ExprPtr expr;        // the interpolated expression, or null
+  std::string format;  // what follows ':' inside the braces ("03"), empty when absent
+  SourceSpan span;
+};
+struct StringLit {
+  std::vector<StringPart> parts;  // empty for ""; one text part for a plain string
+  bool is_plain() const { return parts.empty() || (parts.size() == 1 && !parts[0].expr); }
+  std::string plain_text() const { return parts.empty() ? std::string() : parts[0].text; }
+};
+struct VectorLit {  // (x, y, z)
+  std::array<ExprPtr, 3> components;
+};
+struct ListLit {  // [a, b, ...]
+  std::vector<ExprPtr> items;
+};
+struct NameRef {
+  std::string name;
+};
+
+enum class UnaryOp { Negate, Not };
+enum class BinaryOp { Then, Or, And, Eq, Ne, Lt, Le, Gt, Ge, Range, Add, Sub, Mul, Div, Mod };
+
+struct UnaryExpr {
+  UnaryOp op;
+  ExprPtr operand;
+};
+struct BinaryExpr {
+  BinaryOp op;
+  ExprPtr lhs;
+  ExprPtr rhs;
+  SourceSpan op_span;  // the operator token
+};
+struct Argument {
+  std::optional<Name> label;  // `eye:` in lookat(eye: ...); empty for a positional argument
+  ExprPtr value;
+  SourceSpan span;
+};
+struct CallExpr {
+  ExprPtr callee;
+  std::vector<Argument> args;
+};
+struct MemberExpr {  // v.x
+  ExprPtr object;
+  Name member;
+};
+struct IndexExpr {  // l[0]
+  ExprPtr object;
+  ExprPtr index;
+};
+
+// Expressions are at most kMaxExprHeight nodes deep (the parser reports deeper ones), so recursive
+// walkers — the evaluator, dump(), the destructors — stay well within the stack.
+inline constexpr std::uint32_t kMaxExprHeight = 256;
+
+struct Expr {
+  SourceSpan span;
+  std::variant<NumberLit, BoolLit, StringLit, VectorLit, ListLit, NameRef, UnaryExpr, BinaryExpr, CallExpr,
+               MemberExpr, IndexExpr>
+      node;
+  std::uint32_t height = 1;  // nodes on the longest path down from here, this one included
+};
+
+// ---- solids ------------------------------------------------------------------------------------
+
+// A vertex id: a whole number ("12") or a name ("top"). `text` is as written.
+struct VertexId {
+  std::string text;
+  bool is_number = false;
+  std::int64_t number = 0;  // value when is_number
+  SourceSpan span;
+};
+struct VertexDecl {  // vertex ID = EXPR
+  VertexId id;
+  ExprPtr position;
+};
+struct HoleLoop {  // hole ID ID ID ...
+  std::vector<VertexId> ids;
+  SourceSpan span;
+};
+struct FaceDecl {  // face ID ID ID ... [hole ...]...
+  std::vector<VertexId> ids;
+  std::vector<HoleLoop> holes;
+};
+struct LineDecl {  // line ID ID
+  VertexId from;
+  VertexId to;
+};
+struct SolidItem {
+  SourceSpan span;
+  std::variant<VertexDecl, FaceDecl, LineDecl> node;
+};
+
+// ---- statements --------------------------------------------------------------------------------
+
+struct Stmt;
+struct Block {
+  std::vector<Stmt> statements;
+  SourceSpan span;  // from '{' to '}'
+};
+
+enum class Orientation { Unspecified, Landscape, Portrait };
+
+struct SolidStmt {
+  Name name;
+  std::vector<SolidItem> items;
+};
+struct LetStmt {
+  Name name;
+  ExprPtr value;
+};
+struct Param {
+  Name name;
+  ExprPtr default_value;  // null when the parameter has no default
+};
+// def NAME(params) = EXPR       (expression form: `body` is empty, `value` set)
+// def NAME(params) { ... }      (block form: `value` null; `return EXPR` inside gives the result)
+struct DefStmt {
+  Name name;
+  std::vector<Param> params;
+  ExprPtr value;
+  std::optional<Block> body;
+};
+struct ReturnStmt {
+  ExprPtr value;  // null for a bare `return`
+};
+struct ForStmt {
+  Name variable;
+  ExprPtr iterable;
+  Block body;
+};
+struct IfStmt {
+  ExprPtr condition;
+  Block then_block;
+  std::optional<Block> else_block;  // `else if` is an else block holding one IfStmt
+};
+struct DrawStmt {
+  ExprPtr object;
+  ExprPtr transform;  // after `at`; null when absent
+};
+struct CameraStmt {
+  Name name;
+  ExprPtr value;
+};
+struct AnimateStmt {  // animate frames N [fps F]
+  ExprPtr frames;
+  ExprPtr fps;  // null when absent
+};
+struct PaperSpec {
+  std::optional<Name> size;  // "A4", "letter", ... as written
+  Orientation orientation = Orientation::Unspecified;
+};
+struct OutputStmt {  // output "pattern-{frame:03}.pdf" [paper SIZE] [landscape|portrait]
+  ExprPtr pattern;   // a StringLit expression
+  PaperSpec paper;
+};
+struct PaperStmt {  // paper SIZE [landscape|portrait]
+  PaperSpec paper;
+};
+struct StyleStmt {  // style hidden dashed|off
+  Name property;    // "hidden"
+  Name value;       // "dashed" or "off"
+};
+struct IncludeStmt {  // include "file.hls"
+  std::string path;
+  SourceSpan path_span;
+};
+
+struct Stmt {
+  SourceSpan span;
+  std::variant<SolidStmt, LetStmt, DefStmt, ReturnStmt, ForStmt, IfStmt, DrawStmt, CameraStmt, AnimateStmt,
+               OutputStmt, PaperStmt, StyleStmt, IncludeStmt>
+      node;
+};
+
+struct Script {
+  FileId file = 0;
+  std::vector<Stmt> statements;
+};
+
+// ---- names and dumps (for tests, the REPL and error messages) ----------------------------------
+
+const char* to_string(UnaryOp op);                // "-", "not"
+const char* to_string(BinaryOp op);               // "then", "+", "..", ...
+const char* statement_keyword(const Stmt& stmt);  // "solid", "let", ...
+
+// A compact S-expression of a node, e.g. (draw (call post (+ 1 i)) (call translate (* 2 i) 0 0)).
+std::string dump(const Expr& expr);
+std::string dump(const Stmt& stmt);
+std::string dump(const Script& script);  // one statement per line
+
+}  // namespace hlr::lang

@@ -1,0 +1,482 @@
+// PEGTL actions that build the AST, and nothing else: no evaluation, no name lookup. Each action
+// takes the nodes its rule's children left on the stack (above the rule's mark, see parse_state.hpp)
+// and replaces them by one node spanning the rule's text.
+#include "lang/ast_builder.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <charconv>
+#include <string>
+#include <tao/pegtl.hpp>
+
+#include "lang/build_helpers.hpp"
+#include "lang/grammar.hpp"
+#include "lang/parse_control.hpp"
+
+namespace hlr::lang::detail {
+namespace {
+
+namespace g = grammar;
+
+using namespace build;  // NOLINT: the helpers are this file's vocabulary
+
+template <typename Rule>
+struct action : tao::pegtl::nothing<Rule> {};
+
+// ---- literals -----------------------------------------------------------------------------------
+
+template <>
+struct action<g::number> {
+  template <typename Input>
+  static void apply(const Input& in, ParseState& s) {
+    const std::string_view text = in.string_view();
+    NumberLit lit;
+    lit.integer = text.find_first_of(".eE") == std::string_view::npos;
+    const auto result = std::from_chars(text.data(), text.data() + text.size(), lit.value);
+    if (result.ec != std::errc()) {
+      throw SyntaxError{in.begin(), "number out of range: numbers must lie within about 1e308",
+                        "write a smaller number, or scale the scene"};
+    }
+    s.items.emplace_back(Expr{span_of(in, s), lit});
+  }
+};
+
+template <>
+struct action<g::bool_lit> {
+  template <typename Input>
+  static void apply(const Input& in, ParseState& s) {
+    s.items.emplace_back(Expr{span_of(in, s), BoolLit{in.string_view() == "true"}});
+  }
+};
+
+template <>
+struct action<g::string_text> {
+  template <typename Input>
+  static void apply(const Input& in, ParseState& s) {
+    s.items.emplace_back(StringPart{std::string(in.string_view()), nullptr, {}, span_of(in, s)});
+  }
+};
+
+template <>
+struct action<g::escape> {
+  template <typename Input>
+  static void apply(const Input& in, ParseState& s) {
+    const char c = in.string_view()[1];
+    const char resolved = c == 'n' ? '\n' : c == 't' ? '\t' : c;
+    s.items.emplace_back(StringPart{std::string(1, resolved), nullptr, {}, span_of(in, s)});
+  }
+};
+
+template <>
+struct action<g::interp_format> : push_token {};
+
+template <>
+struct action<g::interpolation> {
+  template <typename Input>
+  static void apply(const Input& in, ParseState& s) {
+    const std::size_t first = first_child(s);
+    StringPart part{{}, box(take<Expr>(s.items[first])), {}, span_of(in, s)};
+    if (child_count(s) == 2) part.format = std::string(std::get<Token>(s.items[first + 1]).text);
+    replace_children(s, std::move(part));
+  }
+};
+
+template <>
+struct action<g::string_lit> : make_string {};
+
+// ---- expressions --------------------------------------------------------------------------------
+
+template <>
+struct action<g::paren_expr> {
+  template <typename Input>
+  static void apply(const Input& in, ParseState& s) {
+    if (child_count(s) == 1) return;  // (e): the inner expression, as it is
+    const std::size_t first = first_child(s);
+    VectorLit vec;
+    for (std::size_t i = 0; i < 3; ++i) vec.components[i] = box(take<Expr>(s.items[first + i]));
+    replace_children(s, with_height(Expr{span_of(in, s), std::move(vec)}, s));
+  }
+};
+
+template <>
+struct action<g::list_lit> {
+  template <typename Input>
+  static void apply(const Input& in, ParseState& s) {
+    ListLit list;
+    for (std::size_t i = first_child(s); i < s.items.size(); ++i)
+      list.items.push_back(box(take<Expr>(s.items[i])));
+    replace_children(s, with_height(Expr{span_of(in, s), std::move(list)}, s));
+  }
+};
+
+template <>
+struct action<g::name_ref> {
+  template <typename Input>
+  static void apply(const Input& in, ParseState& s) {
+    s.items.emplace_back(Expr{span_of(in, s), NameRef{std::string(in.string_view())}});
+  }
+};
+
+template <>
+struct action<g::arg_label> {
+  template <typename Input>
+  static void apply(const Input& in, ParseState& s) {
+    const std::string_view text = in.string_view();
+    std::size_t n = 0;
+    while (n < text.size() && (std::isalnum(static_cast<unsigned char>(text[n])) || text[n] == '_')) ++n;
+    s.items.emplace_back(Name{std::string(text.substr(0, n)), s.span(in.begin(), in.begin() + n)});
+  }
+};
+
+template <>
+struct action<g::argument> : make_argument {};
+
+template <>
+struct action<g::call_suffix> {
+  template <typename Input>
+  static void apply(const Input& in, ParseState& s) {
+    CallSuffix call{{}, span_of(in, s)};
+    for (std::size_t i = first_child(s); i < s.items.size(); ++i)
+      call.args.push_back(take<Argument>(s.items[i]));
+    replace_children(s, std::move(call));
+  }
+};
+
+template <>
+struct action<g::member_name> : push_name {};
+
+template <>
+struct action<g::member_suffix> {
+  template <typename Input>
+  static void apply(const Input& in, ParseState& s) {
+    replace_children(s, MemberSuffix{take<Name>(s.items.back()), span_of(in, s)});
+  }
+};
+
+template <>
+struct action<g::index_suffix> {
+  template <typename Input>
+  static void apply(const Input& in, ParseState& s) {
+    replace_children(s, IndexSuffix{box(take<Expr>(s.items.back())), span_of(in, s)});
+  }
+};
+
+template <>
+struct action<g::postfix_expr> {
+  template <typename Input>
+  static void apply(const Input& /*in*/, ParseState& s) {
+    if (child_count(s) == 1) return;
+    const std::size_t first = first_child(s);
+    Expr acc = take<Expr>(s.items[first]);
+    for (std::size_t i = first + 1; i < s.items.size(); ++i) {
+      Item& suffix = s.items[i];
+      if (holds<CallSuffix>(suffix)) {
+        auto call = take<CallSuffix>(suffix);
+        const SourceSpan span = join(acc.span, call.span);
+        acc = with_height(Expr{span, CallExpr{box(std::move(acc)), std::move(call.args)}}, s);
+      } else if (holds<MemberSuffix>(suffix)) {
+        auto member = take<MemberSuffix>(suffix);
+        const SourceSpan span = join(acc.span, member.span);
+        acc = with_height(Expr{span, MemberExpr{box(std::move(acc)), std::move(member.member)}}, s);
+      } else {
+        auto index = take<IndexSuffix>(suffix);
+        const SourceSpan span = join(acc.span, index.span);
+        acc = with_height(Expr{span, IndexExpr{box(std::move(acc)), std::move(index.index)}}, s);
+      }
+    }
+    replace_children(s, std::move(acc));
+  }
+};
+
+// clang-format off
+template <> struct action<g::neg_op> : push_token {};
+template <> struct action<g::not_op> : push_token {};
+template <> struct action<g::mul_op> : push_token {};
+template <> struct action<g::add_op> : push_token {};
+template <> struct action<g::range_op> : push_token {};
+template <> struct action<g::cmp_op> : push_token {};
+template <> struct action<g::and_op> : push_token {};
+template <> struct action<g::or_op> : push_token {};
+template <> struct action<g::then_op> : push_token {};
+template <> struct action<g::neg_expr> : make_prefix {};
+template <> struct action<g::not_expr> : make_prefix {};
+template <> struct action<g::mul_expr> : fold_binary {};
+template <> struct action<g::add_expr> : fold_binary {};
+template <> struct action<g::range_expr> : fold_binary {};
+template <> struct action<g::cmp_expr> : fold_binary {};
+template <> struct action<g::and_expr> : fold_binary {};
+template <> struct action<g::or_expr> : fold_binary {};
+template <> struct action<g::then_expr> : fold_binary {};
+// clang-format on
+
+// ---- solids -------------------------------------------------------------------------------------
+
+template <>
+struct action<g::id_number> {
+  template <typename Input>
+  static void apply(const Input& in, ParseState& s) {
+    const std::string_view text = in.string_view();
+    VertexId id{std::string(text), true, 0, span_of(in, s)};
+    if (std::from_chars(text.data(), text.data() + text.size(), id.number).ec != std::errc()) {
+      throw SyntaxError{in.begin(), "vertex id too large: numeric ids must be below 2^63",
+                        "use a smaller number or a name"};
+    }
+    s.items.emplace_back(std::move(id));
+  }
+};
+
+template <>
+struct action<g::id_name> {
+  template <typename Input>
+  static void apply(const Input& in, ParseState& s) {
+    s.items.emplace_back(VertexId{std::string(in.string_view()), false, 0, span_of(in, s)});
+  }
+};
+
+template <>
+struct action<g::vertex_decl> {
+  template <typename Input>
+  static void apply(const Input& in, ParseState& s) {
+    const std::size_t first = first_child(s);
+    VertexDecl decl{take<VertexId>(s.items[first]), box(take<Expr>(s.items[first + 1]))};
+    replace_children(s, SolidItem{span_of(in, s), std::move(decl)});
+  }
+};
+
+template <>
+struct action<g::hole_clause> {
+  template <typename Input>
+  static void apply(const Input& in, ParseState& s) {
+    HoleLoop hole{{}, span_of(in, s)};
+    for (std::size_t i = first_child(s); i < s.items.size(); ++i)
+      hole.ids.push_back(take<VertexId>(s.items[i]));
+    replace_children(s, std::move(hole));
+  }
+};
+
+template <>
+struct action<g::face_decl> {
+  template <typename Input>
+  static void apply(const Input& in, ParseState& s) {
+    FaceDecl face;
+    for (std::size_t i = first_child(s); i < s.items.size(); ++i) {
+      if (holds<VertexId>(s.items[i])) {
+        face.ids.push_back(take<VertexId>(s.items[i]));
+      } else {
+        face.holes.push_back(take<HoleLoop>(s.items[i]));
+      }
+    }
+    replace_children(s, SolidItem{span_of(in, s), std::move(face)});
+  }
+};
+
+template <>
+struct action<g::line_decl> {
+  template <typename Input>
+  static void apply(const Input& in, ParseState& s) {
+    const std::size_t first = first_child(s);
+    LineDecl line{take<VertexId>(s.items[first]), take<VertexId>(s.items[first + 1])};
+    replace_children(s, SolidItem{span_of(in, s), std::move(line)});
+  }
+};
+
+template <>
+struct action<g::solid_stmt> {
+  template <typename Input>
+  static void apply(const Input& in, ParseState& s) {
+    make_statement(span_of(in, s), s, [](auto it, auto end) {
+      SolidStmt solid{take<Name>(*it), {}};
+      for (++it; it != end; ++it) solid.items.push_back(take<SolidItem>(*it));
+      return solid;
+    });
+  }
+};
+
+// ---- statements ---------------------------------------------------------------------------------
+
+// clang-format off
+template <> struct action<g::solid_name> : push_name {};
+template <> struct action<g::let_name> : push_name {};
+template <> struct action<g::def_name> : push_name {};
+template <> struct action<g::param_name> : push_name {};
+template <> struct action<g::for_variable> : push_name {};
+template <> struct action<g::camera_name> : push_name {};
+template <> struct action<g::paper_size> : push_name {};
+template <> struct action<g::style_property> : push_name {};
+template <> struct action<g::style_value> : push_name {};
+template <> struct action<g::orientation> : push_token {};
+template <> struct action<g::param> : make_param {};
+template <> struct action<g::block> : make_block {};
+// clang-format on
+
+// `else if ...` becomes an else block holding that one if statement.
+template <>
+struct action<g::else_body> {
+  template <typename Input>
+  static void apply(const Input& in, ParseState& s) {
+    if (!holds<Stmt>(s.items.back())) return;
+    Block block{{}, span_of(in, s)};
+    block.statements.push_back(take<Stmt>(s.items.back()));
+    replace_children(s, std::move(block));
+  }
+};
+
+template <>
+struct action<g::let_stmt> {
+  template <typename Input>
+  static void apply(const Input& in, ParseState& s) {
+    make_statement(span_of(in, s), s, [](auto it, auto) {
+      return LetStmt{take<Name>(it[0]), box(take<Expr>(it[1]))};
+    });
+  }
+};
+
+template <>
+struct action<g::def_stmt> {
+  template <typename Input>
+  static void apply(const Input& in, ParseState& s) {
+    make_statement(span_of(in, s), s, [](auto it, auto end) {
+      DefStmt def{take<Name>(*it), {}, nullptr, std::nullopt};
+      for (++it; holds<Param>(*it); ++it) def.params.push_back(take<Param>(*it));
+      if (holds<Block>(*it)) {
+        def.body = take<Block>(*it);
+      } else {
+        def.value = box(take<Expr>(*it));
+      }
+      (void)end;
+      return def;
+    });
+  }
+};
+
+template <>
+struct action<g::return_stmt> {
+  template <typename Input>
+  static void apply(const Input& in, ParseState& s) {
+    make_statement(span_of(in, s), s, [](auto it, auto end) { return ReturnStmt{optional_expr(it, end)}; });
+  }
+};
+
+template <>
+struct action<g::for_stmt> {
+  template <typename Input>
+  static void apply(const Input& in, ParseState& s) {
+    make_statement(span_of(in, s), s, [](auto it, auto) {
+      return ForStmt{take<Name>(it[0]), box(take<Expr>(it[1])), take<Block>(it[2])};
+    });
+  }
+};
+
+template <>
+struct action<g::if_stmt> {
+  template <typename Input>
+  static void apply(const Input& in, ParseState& s) {
+    make_statement(span_of(in, s), s, [](auto it, auto end) {
+      IfStmt stmt{box(take<Expr>(it[0])), take<Block>(it[1]), std::nullopt};
+      if (end - it == 3) stmt.else_block = take<Block>(it[2]);
+      return stmt;
+    });
+  }
+};
+
+template <>
+struct action<g::draw_stmt> {
+  template <typename Input>
+  static void apply(const Input& in, ParseState& s) {
+    make_statement(span_of(in, s), s, [](auto it, auto end) {
+      return DrawStmt{box(take<Expr>(it[0])), optional_expr(it + 1, end)};
+    });
+  }
+};
+
+template <>
+struct action<g::camera_stmt> {
+  template <typename Input>
+  static void apply(const Input& in, ParseState& s) {
+    make_statement(span_of(in, s), s, [](auto it, auto) {
+      return CameraStmt{take<Name>(it[0]), box(take<Expr>(it[1]))};
+    });
+  }
+};
+
+template <>
+struct action<g::animate_stmt> {
+  template <typename Input>
+  static void apply(const Input& in, ParseState& s) {
+    make_statement(span_of(in, s), s, [](auto it, auto end) {
+      return AnimateStmt{box(take<Expr>(it[0])), optional_expr(it + 1, end)};
+    });
+  }
+};
+
+template <>
+struct action<g::output_stmt> {
+  template <typename Input>
+  static void apply(const Input& in, ParseState& s) {
+    make_statement(span_of(in, s), s, [](auto it, auto end) {
+      return OutputStmt{box(take<Expr>(it[0])), paper_spec(it + 1, end)};
+    });
+  }
+};
+
+template <>
+struct action<g::paper_stmt> {
+  template <typename Input>
+  static void apply(const Input& in, ParseState& s) {
+    make_statement(span_of(in, s), s, [](auto it, auto end) { return PaperStmt{paper_spec(it, end)}; });
+  }
+};
+
+template <>
+struct action<g::style_stmt> {
+  template <typename Input>
+  static void apply(const Input& in, ParseState& s) {
+    make_statement(span_of(in, s), s, [](auto it, auto) {
+      return StyleStmt{take<Name>(it[0]), take<Name>(it[1])};
+    });
+  }
+};
+
+template <>
+struct action<g::include_path> {
+  template <typename Input>
+  static void apply(const Input& in, ParseState& s) {
+    const auto& lit = std::get<StringLit>(std::get<Expr>(s.items.back()).node);
+    if (!lit.is_plain()) {
+      throw SyntaxError{in.begin(), "the file name after 'include' must be a plain string, without '{...}'",
+                        "includes are read before the script runs, so nothing can be interpolated"};
+    }
+  }
+};
+
+template <>
+struct action<g::include_stmt> {
+  template <typename Input>
+  static void apply(const Input& in, ParseState& s) {
+    make_statement(span_of(in, s), s, [](auto it, auto) {
+      Expr path = take<Expr>(it[0]);
+      return IncludeStmt{std::get<StringLit>(path.node).plain_text(), path.span};
+    });
+  }
+};
+
+}  // namespace
+
+StatementParse parse_statement(const SourceFile& file, std::size_t offset) {
+  ParseState state;
+  state.file = &file;
+  state.base = file.text().data();
+  tao::pegtl::memory_input<tao::pegtl::tracking_mode::lazy> in(state.base + offset,
+                                                               state.base + file.text().size(), file.name());
+  StatementParse result;
+  try {
+    (void)tao::pegtl::parse<tao::pegtl::must<g::top_statement>, action, control>(in, state);
+    result.statement = std::get<Stmt>(std::move(state.items.back()));
+    result.end = state.offset(in.current());
+  } catch (const SyntaxError& error) {
+    result.error = error;
+  }
+  return result;
+}
+
+}  // namespace hlr::lang::detail

@@ -1,0 +1,311 @@
+// The hlrscript grammar (PEGTL 3.2), read top to bottom: padding and comments, keywords, literals,
+// expressions one precedence level per rule, solid bodies, statements, and the script.
+//
+// Padding rule: a rule eats the padding *inside* it and never the padding around it. Sequences put
+// `sp` between their elements; no rule begins or ends with `sp`. So a rule's match is exactly its
+// text (the AST spans come from it), and a failing `must<>` points at the next token, not at the
+// whitespace before it. Padding is spaces, tabs, newlines and `#` comments: newlines carry no
+// meaning. Statements need no separator because each one starts with a keyword; `for i in 0..4 {
+// draw post(1 + i) at translate(2*i, 0, 0) }` on one line is the same as spread over three.
+//
+// Aliases: a rule that stands for another in one place (to get its own error message) is written
+// `struct add_rhs : seq< mul_expr > {}`, never by deriving, so that mul_expr's action still runs.
+//
+// Commit points: after a statement keyword (and after `(`, `[`, `{`, an operator, ...) the rest is
+// wrapped in `must<>`: a failure there raises an error at that spot instead of backtracking. Each
+// rule under `must<>` is its own struct with its own message in grammar_errors.hpp, so the message
+// names the context ("expected '=' after the vertex id"). Nothing outside `must<>` has a message.
+//
+// Precedence, lowest first (one rule per level):
+//   then_expr   a then b            transform composition, left-assoc
+//   or_expr     a or b              left-assoc
+//   and_expr    a and b             left-assoc
+//   not_expr    not a               prefix (so `not a == b` is `not (a == b)`)
+//   cmp_expr    == != < <= > >=     non-associative: `a < b < c` is an error
+//   range_expr  a..b                non-associative
+//   add_expr    + -                 left-assoc
+//   mul_expr    * / %               left-assoc
+//   neg_expr    -a                  prefix
+//   postfix     f(x, k: v)  v.x  l[0]
+//   primary     number string true false (x, y, z) (e) [a, b] name
+//
+// Reserved words (never names): solid let def return for in if else draw at camera animate output
+// paper style include then and or not true false. Words with meaning in one place only stay free
+// as names elsewhere: vertex face hole line (inside a solid), frames fps (after animate),
+// landscape portrait (after a paper size), hidden dashed off (after style).
+#pragma once
+
+#include <tao/pegtl.hpp>
+
+namespace hlr::lang::grammar {
+
+using namespace tao::pegtl;  // NOLINT: the grammar reads as PEG, as in PEGTL's own examples
+
+// clang-format off
+
+// ---- padding and comments -----------------------------------------------------------------------
+
+struct comment : seq< one< '#' >, until< eolf > > {};
+struct blank : one< ' ', '\t', '\r', '\n', '\f', '\v' > {};
+struct sp : star< sor< blank, comment > > {};
+
+// ---- identifiers and keywords -------------------------------------------------------------------
+
+struct identifier_first : ranges< 'a', 'z', 'A', 'Z', '_' > {};
+struct identifier_other : ranges< 'a', 'z', 'A', 'Z', '0', '9', '_' > {};
+struct identifier : seq< identifier_first, star< identifier_other > > {};
+
+template< typename Word > struct key : seq< Word, not_at< identifier_other > > {};
+
+struct key_solid : key< TAO_PEGTL_STRING( "solid" ) > {};
+struct key_let : key< TAO_PEGTL_STRING( "let" ) > {};
+struct key_def : key< TAO_PEGTL_STRING( "def" ) > {};
+struct key_return : key< TAO_PEGTL_STRING( "return" ) > {};
+struct key_for : key< TAO_PEGTL_STRING( "for" ) > {};
+struct key_in : key< TAO_PEGTL_STRING( "in" ) > {};
+struct key_if : key< TAO_PEGTL_STRING( "if" ) > {};
+struct key_else : key< TAO_PEGTL_STRING( "else" ) > {};
+struct key_draw : key< TAO_PEGTL_STRING( "draw" ) > {};
+struct key_at : key< TAO_PEGTL_STRING( "at" ) > {};
+struct key_camera : key< TAO_PEGTL_STRING( "camera" ) > {};
+struct key_animate : key< TAO_PEGTL_STRING( "animate" ) > {};
+struct key_output : key< TAO_PEGTL_STRING( "output" ) > {};
+struct key_paper : key< TAO_PEGTL_STRING( "paper" ) > {};
+struct key_style : key< TAO_PEGTL_STRING( "style" ) > {};
+struct key_include : key< TAO_PEGTL_STRING( "include" ) > {};
+struct key_then : key< TAO_PEGTL_STRING( "then" ) > {};
+struct key_and : key< TAO_PEGTL_STRING( "and" ) > {};
+struct key_or : key< TAO_PEGTL_STRING( "or" ) > {};
+struct key_not : key< TAO_PEGTL_STRING( "not" ) > {};
+struct key_true : key< TAO_PEGTL_STRING( "true" ) > {};
+struct key_false : key< TAO_PEGTL_STRING( "false" ) > {};
+
+struct reserved : sor< key_solid, key_let, key_def, key_return, key_for, key_in, key_if, key_else, key_draw,
+                       key_at, key_camera, key_animate, key_output, key_paper, key_style, key_include,
+                       key_then, key_and, key_or, key_not, key_true, key_false > {};
+
+// Contextual words: keywords only where they appear.
+struct key_vertex : key< TAO_PEGTL_STRING( "vertex" ) > {};
+struct key_face : key< TAO_PEGTL_STRING( "face" ) > {};
+struct key_hole : key< TAO_PEGTL_STRING( "hole" ) > {};
+struct key_line : key< TAO_PEGTL_STRING( "line" ) > {};
+struct key_fps : key< TAO_PEGTL_STRING( "fps" ) > {};
+struct key_landscape : key< TAO_PEGTL_STRING( "landscape" ) > {};
+struct key_portrait : key< TAO_PEGTL_STRING( "portrait" ) > {};
+struct solid_word : sor< key_vertex, key_face, key_hole, key_line > {};
+
+struct name : seq< not_at< reserved >, identifier > {};
+
+// ---- literals -----------------------------------------------------------------------------------
+
+struct digits : plus< digit > {};
+struct fraction : seq< one< '.' >, digits > {};
+struct exponent_digits : digits {};
+struct exponent : seq< one< 'e', 'E' >, opt< one< '+', '-' > >, must< exponent_digits > > {};
+struct number_single_point : not_at< one< '.' >, digit > {};   // 1.2.3
+struct number_no_letter : not_at< identifier_other > {};         // 2x
+struct number : seq< digits, opt< fraction >, opt< exponent >, must< number_single_point, number_no_letter > > {};
+
+struct bool_lit : sor< key_true, key_false > {};
+
+struct expression;
+
+struct escape_char : one< '"', '\\', 'n', 't', '{', '}' > {};
+struct escape : seq< one< '\\' >, must< escape_char > > {};
+struct string_text : plus< not_one< '"', '\\', '{', '\n', '\r' > > {};
+struct interp_open : one< '{' > {};
+struct interp_expr : seq< expression > {};
+struct interp_format : star< not_one< '}', '"', '\n', '\r' > > {};
+struct interp_close : one< '}' > {};
+struct interpolation : seq< interp_open, sp, must< interp_expr >, sp, opt< one< ':' >, interp_format >, must< interp_close > > {};
+struct string_open : one< '"' > {};
+struct string_close : one< '"' > {};
+struct string_lit : seq< string_open, star< sor< string_text, escape, interpolation > >, must< string_close > > {};
+
+// ---- expressions, one rule per precedence level (lowest last) -----------------------------------
+
+struct paren_open : one< '(' > {};
+struct group_close : one< ')' > {};
+struct vector_second : seq< expression > {};
+struct vector_comma : one< ',' > {};
+struct vector_third : seq< expression > {};
+struct vector_close : one< ')' > {};
+struct vector_tail : seq< one< ',' >, sp, must< vector_second >, sp, must< vector_comma >, sp, must< vector_third >, sp, must< vector_close > > {};
+struct paren_first : seq< expression > {};
+struct paren_expr : seq< paren_open, sp, must< paren_first >, sp, sor< vector_tail, must< group_close > > > {};
+
+struct list_open : one< '[' > {};
+struct list_item : seq< expression > {};
+struct list_next_item : seq< list_item > {};
+struct list_close : one< ']' > {};
+struct list_items : seq< list_item, star< sp, one< ',' >, sp, must< list_next_item > > > {};
+struct list_lit : seq< list_open, sp, opt< list_items, sp >, must< list_close > > {};
+
+struct name_ref : name {};
+struct primary : sor< number, string_lit, bool_lit, paren_expr, list_lit, name_ref > {};
+
+struct arg_label : seq< name, sp, one< ':' > > {};
+struct labeled_value : seq< expression > {};
+struct argument : sor< seq< arg_label, sp, must< labeled_value > >, expression > {};
+struct next_argument : seq< argument > {};
+struct arguments : seq< argument, star< sp, one< ',' >, sp, must< next_argument > > > {};
+struct call_open : one< '(' > {};
+struct call_close : one< ')' > {};
+struct call_suffix : seq< call_open, sp, opt< arguments, sp >, must< call_close > > {};
+struct member_name : name {};
+struct member_suffix : seq< one< '.' >, not_at< one< '.' > >, sp, must< member_name > > {};
+struct index_open : one< '[' > {};
+struct index_value : seq< expression > {};
+struct index_close : one< ']' > {};
+struct index_suffix : seq< index_open, sp, must< index_value >, sp, must< index_close > > {};
+struct postfix_expr : seq< primary, star< sp, sor< call_suffix, member_suffix, index_suffix > > > {};
+
+struct neg_op : one< '-' > {};
+struct neg_operand;
+struct neg_expr : sor< seq< neg_op, sp, must< neg_operand > >, postfix_expr > {};
+struct neg_operand : seq< neg_expr > {};
+
+struct mul_op : one< '*', '/', '%' > {};
+struct mul_rhs : seq< neg_expr > {};
+struct mul_expr : seq< neg_expr, star< sp, mul_op, sp, must< mul_rhs > > > {};
+
+struct add_op : one< '+', '-' > {};
+struct add_rhs : seq< mul_expr > {};
+struct add_expr : seq< mul_expr, star< sp, add_op, sp, must< add_rhs > > > {};
+
+struct range_op : two< '.' > {};
+struct range_rhs : seq< add_expr > {};
+struct range_single : not_at< sp, range_op > {};
+struct range_expr : seq< add_expr, opt< sp, range_op, sp, must< range_rhs >, must< range_single > > > {};
+
+struct cmp_op : sor< two< '=' >, string< '!', '=' >, string< '<', '=' >, string< '>', '=' >, one< '<' >, one< '>' > > {};
+struct cmp_rhs : seq< range_expr > {};
+struct cmp_single : not_at< sp, cmp_op > {};
+struct cmp_expr : seq< range_expr, opt< sp, cmp_op, sp, must< cmp_rhs >, must< cmp_single > > > {};
+
+struct not_op : key_not {};
+struct not_operand;
+struct not_expr : sor< seq< not_op, sp, must< not_operand > >, cmp_expr > {};
+struct not_operand : seq< not_expr > {};
+
+struct and_op : key_and {};
+struct and_rhs : seq< not_expr > {};
+struct and_expr : seq< not_expr, star< sp, and_op, sp, must< and_rhs > > > {};
+
+struct or_op : key_or {};
+struct or_rhs : seq< and_expr > {};
+struct or_expr : seq< and_expr, star< sp, or_op, sp, must< or_rhs > > > {};
+
+struct then_op : key_then {};
+struct then_rhs : seq< or_expr > {};
+struct then_expr : seq< or_expr, star< sp, then_op, sp, must< then_rhs > > > {};
+
+struct expression : seq< then_expr > {};
+
+// ---- solid bodies -------------------------------------------------------------------------------
+
+struct id_number : seq< digits, not_at< identifier_other > > {};
+struct id_name : seq< not_at< solid_word >, name > {};
+struct vertex_id : sor< id_number, id_name > {};
+struct vertex_decl_id : seq< vertex_id > {};
+struct vertex_eq : seq< one< '=' >, not_at< one< '=' > > > {};
+struct vertex_position : seq< expression > {};
+struct vertex_decl : seq< key_vertex, sp, must< vertex_decl_id >, sp, must< vertex_eq >, sp, must< vertex_position > > {};
+
+struct face_ids : seq< vertex_id, star< sp, vertex_id > > {};
+struct hole_ids : seq< face_ids > {};
+struct hole_clause : seq< key_hole, sp, must< hole_ids > > {};
+struct face_decl : seq< key_face, sp, must< face_ids >, star< sp, hole_clause > > {};
+
+struct line_from : seq< vertex_id > {};
+struct line_to : seq< vertex_id > {};
+struct line_decl : seq< key_line, sp, must< line_from >, sp, must< line_to > > {};
+
+struct solid_item : sor< vertex_decl, face_decl, line_decl > {};
+struct solid_name : name {};
+struct solid_open : one< '{' > {};
+struct solid_close : one< '}' > {};
+struct solid_stmt : seq< key_solid, sp, must< solid_name >, sp, must< solid_open >, sp, star< solid_item, sp >, must< solid_close > > {};
+
+// ---- statements ---------------------------------------------------------------------------------
+
+struct statement;
+
+struct block_open : one< '{' > {};
+struct block_close : one< '}' > {};
+struct block : seq< block_open, sp, star< statement, sp >, must< block_close > > {};
+
+struct let_name : name {};
+struct let_eq : seq< one< '=' >, not_at< one< '=' > > > {};
+struct let_value : seq< expression > {};
+struct let_stmt : seq< key_let, sp, must< let_name >, sp, must< let_eq >, sp, must< let_value > > {};
+
+struct def_name : name {};
+struct params_open : one< '(' > {};
+struct param_name : name {};
+struct param_default : seq< expression > {};
+struct param : seq< param_name, opt< sp, one< '=' >, sp, must< param_default > > > {};
+struct next_param : seq< param > {};
+struct params : seq< param, star< sp, one< ',' >, sp, must< next_param > > > {};
+struct params_close : one< ')' > {};
+struct def_value : seq< expression > {};
+struct def_block : seq< block > {};
+struct def_body : sor< seq< one< '=' >, sp, must< def_value > >, def_block > {};
+struct def_stmt : seq< key_def, sp, must< def_name >, sp, must< params_open >, sp, opt< params, sp >, must< params_close >, sp, must< def_body > > {};
+
+struct return_value : seq< expression > {};
+struct return_stmt : seq< key_return, opt< sp, return_value > > {};
+
+struct for_variable : name {};
+struct for_in : key_in {};
+struct for_iterable : seq< expression > {};
+struct for_body : seq< block > {};
+struct for_stmt : seq< key_for, sp, must< for_variable >, sp, must< for_in >, sp, must< for_iterable >, sp, must< for_body > > {};
+
+struct if_stmt;
+struct if_condition : seq< expression > {};
+struct if_body : seq< block > {};
+struct else_body : sor< if_stmt, block > {};
+struct if_stmt : seq< key_if, sp, must< if_condition >, sp, must< if_body >, opt< sp, key_else, sp, must< else_body > > > {};
+
+struct draw_object : seq< expression > {};
+struct draw_transform : seq< expression > {};
+struct draw_stmt : seq< key_draw, sp, must< draw_object >, opt< sp, key_at, sp, must< draw_transform > > > {};
+
+struct camera_name : name {};
+struct camera_eq : seq< one< '=' >, not_at< one< '=' > > > {};
+struct camera_value : seq< expression > {};
+struct camera_stmt : seq< key_camera, sp, must< camera_name >, sp, must< camera_eq >, sp, must< camera_value > > {};
+
+struct animate_frames : key< TAO_PEGTL_STRING( "frames" ) > {};
+struct frame_count : seq< expression > {};
+struct fps_value : seq< expression > {};
+struct animate_stmt : seq< key_animate, sp, must< animate_frames >, sp, must< frame_count >, opt< sp, key_fps, sp, must< fps_value > > > {};
+
+struct paper_size : identifier {};
+struct orientation : sor< key_landscape, key_portrait > {};
+struct output_pattern : seq< string_lit > {};
+struct output_paper_size : seq< paper_size > {};
+struct output_stmt : seq< key_output, sp, must< output_pattern >, opt< sp, key_paper, sp, must< output_paper_size > >, opt< sp, orientation > > {};
+struct paper_stmt : seq< key_paper, sp, must< paper_size >, opt< sp, orientation > > {};
+
+struct style_property : key< TAO_PEGTL_STRING( "hidden" ) > {};
+struct style_value : sor< key< TAO_PEGTL_STRING( "dashed" ) >, key< TAO_PEGTL_STRING( "off" ) > > {};
+struct style_stmt : seq< key_style, sp, must< style_property >, sp, must< style_value > > {};
+
+struct include_path : seq< string_lit > {};
+struct include_stmt : seq< key_include, sp, must< include_path > > {};
+
+struct statement : sor< solid_stmt, let_stmt, def_stmt, return_stmt, for_stmt, if_stmt, draw_stmt, camera_stmt,
+                        animate_stmt, output_stmt, paper_stmt, style_stmt, include_stmt > {};
+
+// ---- the script ---------------------------------------------------------------------------------
+
+// One statement at a time: the parser (parser.cpp) calls this once per statement so that it can
+// resynchronise after an error and report the next one.
+struct top_statement : statement {};
+struct script : seq< sp, until< eof, must< top_statement >, sp > > {};
+
+// clang-format on
+
+}  // namespace hlr::lang::grammar

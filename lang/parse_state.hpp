@@ -1,0 +1,73 @@
+// Internal to lang/: what the parser carries while it matches one statement. Not a public header.
+//
+// `items` is a stack of finished nodes. The control (parse_control.hpp) marks its height when a rule
+// starts; when the rule succeeds its action finds its children above that mark and replaces them by
+// one node; when it fails the stack is cut back to the mark, so backtracking never leaves stray
+// nodes behind.
+#pragma once
+
+#include <cstddef>
+#include <string_view>
+#include <variant>
+#include <vector>
+
+#include "lang/ast.hpp"
+
+namespace hlr::lang::detail {
+
+// An operator or word whose text matters to the parent: '+', 'then', 'landscape', a format spec.
+struct Token {
+  std::string_view text;
+  SourceSpan span;
+};
+
+// call, member and index suffixes, folded onto their object by postfix_expr.
+struct CallSuffix {
+  std::vector<Argument> args;
+  SourceSpan span;
+};
+struct MemberSuffix {
+  Name member;
+  SourceSpan span;
+};
+struct IndexSuffix {
+  ExprPtr index;
+  SourceSpan span;
+};
+
+using Item = std::variant<Expr, Stmt, Token, Name, VertexId, Argument, Param, StringPart, CallSuffix,
+                          MemberSuffix, IndexSuffix, SolidItem, HoleLoop, Block>;
+
+// Thrown by the control (a failed must<>) and by actions; the parser turns it into a Diagnostic.
+struct SyntaxError {
+  const char* at = nullptr;  // where the failing rule began
+  const char* message = "";
+  const char* hint = nullptr;
+  const char* opened_at = nullptr;  // for a missing closing bracket: where the bracket opened
+  char opener = 0;
+  bool expects_name = false;        // a reserved word here gets its own message
+  bool statement_expected = false;  // nothing here starts a statement
+};
+
+// Brackets, blocks and prefix operators nested deeper than this are an error, not a stack overflow.
+inline constexpr std::size_t kMaxNesting = 64;
+
+struct ParseState {
+  const SourceFile* file = nullptr;
+  const char* base = nullptr;  // file->text().data(); offsets are pointer differences from it
+
+  struct Mark {
+    std::size_t items;
+    const char* at;
+  };
+  std::vector<Item> items;
+  std::vector<Mark> marks;
+  std::vector<const char*> openers;  // unclosed brackets, innermost last
+  std::size_t prefix_depth = 0;      // prefix operators and `else if` currently open
+  const char* last_failed_at = nullptr;
+
+  std::size_t offset(const char* p) const { return static_cast<std::size_t>(p - base); }
+  SourceSpan span(const char* begin, const char* end) const { return file->span(offset(begin), offset(end)); }
+};
+
+}  // namespace hlr::lang::detail

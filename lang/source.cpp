@@ -1,0 +1,55 @@
+#include "lang/source.hpp"
+
+#include <algorithm>
+
+namespace hlr::lang {
+
+SourceFile::SourceFile(FileId id, std::string name, std::string text)
+    : id_(id), name_(std::move(name)), text_(std::move(text)) {
+  line_starts_.push_back(0);
+  line_is_ascii_.push_back(true);
+  for (std::size_t i = 0; i < text_.size(); ++i) {
+    if (static_cast<unsigned char>(text_[i]) >= 0x80U) line_is_ascii_.back() = false;
+    if (text_[i] == '\n') {
+      line_starts_.push_back(i + 1);
+      line_is_ascii_.push_back(true);
+    }
+  }
+}
+
+std::size_t count_code_points(std::string_view text) {
+  std::size_t n = 0;
+  for (const char c : text) {
+    if ((static_cast<unsigned char>(c) & 0xC0U) != 0x80U) ++n;
+  }
+  return n;
+}
+
+SourcePos SourceFile::position(std::size_t offset) const {
+  offset = std::min(offset, text_.size());
+  const auto it = std::upper_bound(line_starts_.begin(), line_starts_.end(), offset);
+  const auto line_index = static_cast<std::size_t>(it - line_starts_.begin()) - 1;
+  const std::size_t start = line_starts_[line_index];
+  const std::size_t column =
+      1 + (line_is_ascii_[line_index]
+               ? offset - start
+               : count_code_points(std::string_view(text_).substr(start, offset - start)));
+  return {static_cast<std::uint32_t>(line_index + 1), static_cast<std::uint32_t>(column),
+          static_cast<std::uint32_t>(offset)};
+}
+
+SourceSpan SourceFile::span(std::size_t begin, std::size_t end) const {
+  return {id_, position(begin), position(std::max(begin, end))};
+}
+
+std::string_view SourceFile::line_text(std::uint32_t line) const {
+  if (line == 0 || line > line_starts_.size()) return {};
+  const std::size_t start = line_starts_[line - 1];
+  std::size_t end = line < line_starts_.size() ? line_starts_[line] - 1 : text_.size();
+  std::string_view view(text_);
+  view = view.substr(start, end - start);
+  if (!view.empty() && view.back() == '\r') view.remove_suffix(1);
+  return view;
+}
+
+}  // namespace hlr::lang

@@ -1,0 +1,56 @@
+// Source text and positions. A SourceFile owns one script's text and knows where its lines start;
+// a SourceSpan names a stretch of it by file id, begin and end. Lines and columns are 1-based;
+// a column counts code points (UTF-8), so a tab is one column and 'é' is one column.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace hlr::lang {
+
+using FileId = std::uint32_t;
+
+struct SourcePos {
+  std::uint32_t line = 1;    // 1-based
+  std::uint32_t column = 1;  // 1-based, in code points
+  std::uint32_t offset = 0;  // byte offset into the file's text
+  friend bool operator==(const SourcePos&, const SourcePos&) = default;
+};
+
+// [begin, end): end is one past the last character of the construct.
+struct SourceSpan {
+  FileId file = 0;
+  SourcePos begin;
+  SourcePos end;
+  friend bool operator==(const SourceSpan&, const SourceSpan&) = default;
+};
+
+class SourceFile {
+ public:
+  SourceFile(FileId id, std::string name, std::string text);
+
+  FileId id() const { return id_; }
+  const std::string& name() const { return name_; }
+  const std::string& text() const { return text_; }
+
+  // Position of a byte offset (clamped to the text's size).
+  SourcePos position(std::size_t offset) const;
+  SourceSpan span(std::size_t begin, std::size_t end) const;
+  // Line `line` (1-based) without its line terminator; empty when out of range.
+  std::string_view line_text(std::uint32_t line) const;
+  std::uint32_t line_count() const { return static_cast<std::uint32_t>(line_starts_.size()); }
+
+ private:
+  FileId id_;
+  std::string name_;
+  std::string text_;
+  std::vector<std::size_t> line_starts_;
+  std::vector<bool> line_is_ascii_;  // columns of ASCII lines are byte differences: O(1)
+};
+
+// Number of code points in a UTF-8 string (continuation bytes are not counted; invalid bytes count one).
+std::size_t count_code_points(std::string_view text);
+
+}  // namespace hlr::lang

@@ -1,0 +1,261 @@
+// The grammar alone, rule by rule (PEGTL's rule_*.cpp style): rows of input -> success, local
+// failure (the rule does not match, the caller may try something else) or global failure (a must<>
+// raised, with its message). No actions run here.
+#include "lang/grammar.hpp"
+
+#include <gtest/gtest.h>
+
+#include <string>
+#include <tao/pegtl/contrib/analyze.hpp>
+
+#include "lang/parse_control.hpp"
+
+namespace hlr::lang {
+namespace {
+
+namespace g = grammar;
+namespace pegtl = tao::pegtl;
+
+enum class Outcome { Success, Local, Global };
+
+struct Row {
+  const char* input;
+  Outcome outcome;
+  const char* message = "";  // start of the message, for Global rows
+};
+
+template <typename Rule>
+std::pair<Outcome, std::string> match_whole(const std::string& input) {
+  detail::ParseState state;
+  pegtl::memory_input in(input, "row");
+  try {
+    const bool ok = pegtl::parse<pegtl::seq<Rule, pegtl::eof>, pegtl::nothing, detail::control>(in, state);
+    return {ok ? Outcome::Success : Outcome::Local, ""};
+  } catch (const detail::SyntaxError& e) {
+    return {Outcome::Global, e.message};
+  }
+}
+
+template <typename Rule>
+void check_rows(std::initializer_list<Row> rows) {
+  for (const Row& row : rows) {
+    const auto [outcome, message] = match_whole<Rule>(row.input);
+    EXPECT_EQ(outcome, row.outcome) << "input: " << row.input << "\nmessage: " << message;
+    if (row.outcome == Outcome::Global) {
+      EXPECT_EQ(message.rfind(row.message, 0), 0U) << "input: " << row.input << "\nmessage: " << message;
+    }
+  }
+}
+
+constexpr Outcome S = Outcome::Success;
+constexpr Outcome L = Outcome::Local;
+constexpr Outcome G = Outcome::Global;
+
+TEST(Grammar, AnalyzeFindsNoProblems) {
+  EXPECT_EQ(pegtl::analyze<g::script>(-1), 0U);
+  EXPECT_EQ(pegtl::analyze<g::expression>(-1), 0U);
+}
+
+TEST(Grammar, Padding) {
+  check_rows<g::sp>({{"", S}, {"  \t\n", S}, {"# note\n  # more", S}, {"#", S}, {"x", L}});
+}
+
+TEST(Grammar, Keywords) {
+  check_rows<g::key_for>({{"for", S}, {"format", L}, {"for_", L}, {"fo", L}});
+  check_rows<g::name>(
+      {{"x", S}, {"_a1", S}, {"format", S}, {"for", L}, {"then", L}, {"1x", L}, {"vertex", S}});
+}
+
+TEST(Grammar, Numbers) {
+  check_rows<g::number>({{"0", S},
+                         {"48", S},
+                         {"112.5", S},
+                         {"1e3", S},
+                         {"1.5E-2", S},
+                         {"2e+10", S},
+                         {".5", L},
+                         {"1.2.3", G, "malformed number: a number has at most one decimal point"},
+                         {"2x", G, "malformed number: a letter follows the digits"},
+                         {"1e", G, "expected digits after the exponent"},
+                         {"1.", L}});
+}
+
+TEST(Grammar, Strings) {
+  check_rows<g::string_lit>({{"\"\"", S},
+                             {"\"bunny.off\"", S},
+                             {"\"landing-{frame:03}.pdf\"", S},
+                             {"\"{a + b}\"", S},
+                             {"\"a\\\"b\\\\c\\n\\{\"", S},
+                             {"\"é ü\"", S},
+                             {"\"abc", G, "unterminated string"},
+                             {"\"abc\ndef\"", G, "unterminated string"},
+                             {"\"\\q\"", G, "unknown escape"},
+                             {"\"{}\"", G, "expected an expression inside '{...}'"},
+                             {"\"{x\"", G, "expected '}' to end the '{...}'"},
+                             {"x", L}});
+}
+
+TEST(Grammar, ParensAndVectors) {
+  check_rows<g::paren_expr>({{"(1)", S},
+                             {"( 1 + 2 )", S},
+                             {"(0, 10, 0)", S},
+                             {"(1914, 151, 112.5)", S},
+                             {"(-x, y * 2, f(z))", S},
+                             {"()", G, "expected an expression after '('"},
+                             {"(1", G, "expected ')' or ','"},
+                             {"(1, 2)", G, "expected ',' and a third component"},
+                             {"(1, 2, 3, 4)", G, "expected ')' after the third component"},
+                             {"(1,)", G, "expected the second component"},
+                             {"(1, 2,)", G, "expected the third component"}});
+}
+
+TEST(Grammar, Lists) {
+  check_rows<g::list_lit>({{"[]", S},
+                           {"[1]", S},
+                           {"[1, (0, 0, 0), [2]]", S},
+                           {"[1,]", G, "expected a list element after ','"},
+                           {"[1 2]", G, "expected ',' or ']'"},
+                           {"[1", G, "expected ',' or ']'"}});
+}
+
+TEST(Grammar, Postfix) {
+  check_rows<g::postfix_expr>({{"f()", S},
+                               {"f(1, 2)", S},
+                               {"lookat(eye: (30, 20, 15), fov: 40)", S},
+                               {"rotate(z: 30)", S},
+                               {"v.x", S},
+                               {"l[0]", S},
+                               {"a.b[1](2).c", S},
+                               {"f(1,)", G, "expected an argument after ','"},
+                               {"f(1", G, "expected ',' or ')'"},
+                               {"f(eye: )", G, "expected a value after the argument name"},
+                               {"v.", G, "expected a member name after '.'"},
+                               {"v.1", G, "expected a member name"},
+                               {"l[]", G, "expected an index after '['"},
+                               {"l[0", G, "expected ']' after the index"}});
+}
+
+TEST(Grammar, ExpressionLevels) {
+  check_rows<g::expression>({{"1 + 2 * 3", S},
+                             {"-x", S},
+                             {"- - x", S},
+                             {"2*i", S},
+                             {"0..4", S},
+                             {"0 .. n - 1", S},
+                             {"a == b", S},
+                             {"a <= b and not c or d", S},
+                             {"rotate(z: 30) then scale(2)", S},
+                             {"true", S},
+                             {"1 +", G, "expected an operand after the operator"},
+                             {"1 *", G, "expected an operand after the operator"},
+                             {"-", G, "expected an operand after '-'"},
+                             {"not", G, "expected an operand after 'not'"},
+                             {"a and", G, "expected an operand after 'and'"},
+                             {"a or", G, "expected an operand after 'or'"},
+                             {"a then", G, "expected a transform after 'then'"},
+                             {"0..", G, "expected the end of the range"},
+                             {"0..1..2", G, "a range has one '..'"},
+                             {"a <", G, "expected an operand after the comparison"},
+                             {"a < b < c", G, "comparisons do not chain"},
+                             {"then", L},
+                             {"@", L}});
+}
+
+TEST(Grammar, SolidItems) {
+  check_rows<g::vertex_decl>({{"vertex 1 = (0, 10, 0)", S},
+                              {"vertex top = (0, 10, h)", S},
+                              {"vertex 1 (0, 0, 0)", G, "expected '=' after the vertex id"},
+                              {"vertex = (0, 0, 0)", G, "expected a vertex id"},
+                              {"vertex 1 =", G, "expected the vertex position"},
+                              {"vertex 1 == (0,0,0)", G, "expected '=' after the vertex id"}});
+  check_rows<g::face_decl>({{"face 1 top 3 4", S},
+                            {"face 5 6 7 8 hole 9 10 11", S},
+                            {"face 1 2 3 4 hole 5 6 7 hole 8 9 10", S},
+                            {"face", G, "expected vertex ids after 'face'"},
+                            {"face 1 2 hole", G, "expected vertex ids after 'hole'"}});
+  check_rows<g::line_decl>({{"line 12 13", S},
+                            {"line a b", S},
+                            {"line", G, "expected two vertex ids after 'line'"},
+                            {"line 12", G, "expected a second vertex id"}});
+}
+
+TEST(Grammar, SolidStatement) {
+  check_rows<g::solid_stmt>({{"solid a {}", S},
+                             {"solid lblock {\n vertex 1 = (0,10,0)\n face 1 2 3\n line 1 2\n}", S},
+                             {"solid {}", G, "expected a name after 'solid'"},
+                             {"solid a", G, "expected '{' after the solid's name"},
+                             {"solid a { vertex 1 = (0,0,0)", G, "expected 'vertex', 'face', 'line' or '}'"},
+                             {"solid a { draw x }", G, "expected 'vertex', 'face', 'line' or '}'"}});
+}
+
+TEST(Grammar, Statements) {
+  check_rows<g::statement>({
+      {"let m = import(\"bunny.off\")", S},
+      {"let = 3", G, "expected a name after 'let'"},
+      {"let x 3", G, "expected '=' after the name"},
+      {"let x =", G, "expected a value after '='"},
+      {"def post(h) = prism(regular(6, 0.5), h)", S},
+      {"def f(a, b = 2) { let c = a * b return c }", S},
+      {"def f() = 1", S},
+      {"def (a) = 1", G, "expected a function name"},
+      {"def f = 1", G, "expected '(' and the parameters"},
+      {"def f(a,) = 1", G, "expected a parameter name after ','"},
+      {"def f(a b) = 1", G, "expected a parameter name, ',' or ')'"},
+      {"def f(a)", G, "expected '= expression' or a '{ ... }' body"},
+      {"def f(a) =", G, "expected the function's expression"},
+      {"def f(a = ) = 1", G, "expected a default value"},
+      {"for i in 0..4 { draw post(1 + i) at translate(2*i, 0, 0) }", S},
+      {"for i in [1, 2] {}", S},
+      {"for in 0..4 {}", G, "expected the loop variable"},
+      {"for i 0..4 {}", G, "expected 'in' after the loop variable"},
+      {"for i in {}", G, "expected a range or list after 'in'"},
+      {"for i in 0..4", G, "expected '{' to start the loop body"},
+      {"for i in 0..4 { draw x", G, "expected a statement or '}'"},
+      {"if a { } else { }", S},
+      {"if a { } else if b { }", S},
+      {"if { }", G, "expected a condition after 'if'"},
+      {"if a", G, "expected '{' after the condition"},
+      {"if a {} else", G, "expected '{' or 'if' after 'else'"},
+      {"draw lblock", S},
+      {"draw m at rotate(z: 30) then scale(2)", S},
+      {"draw", G, "expected what to draw after 'draw'"},
+      {"draw x at", G, "expected a transform after 'at'"},
+      {"camera main = lookat(eye: (30, 20, 15), target: (0, 0, 0), up: (0, 0, 1), fov: 40)", S},
+      {"camera = orbit()", G, "expected a camera name"},
+      {"camera c lookat()", G, "expected '=' after the camera name"},
+      {"camera c =", G, "expected a camera after '='"},
+      {"animate frames 48 fps 12", S},
+      {"animate frames 48", S},
+      {"animate 48", G, "expected 'frames' after 'animate'"},
+      {"animate frames", G, "expected the number of frames"},
+      {"animate frames 48 fps", G, "expected frames per second"},
+      {"output \"landing-{frame:03}.pdf\" paper A4 landscape", S},
+      {"output \"x.svg\" portrait", S},
+      {"output x.pdf", G, "expected a quoted file name after 'output'"},
+      {"output \"x.pdf\" paper", G, "expected a paper size"},
+      {"paper A4", S},
+      {"paper letter landscape", S},
+      {"paper", G, "expected a paper size"},
+      {"style hidden dashed", S},
+      {"style hidden off", S},
+      {"style dashed", G, "expected 'hidden' after 'style'"},
+      {"style hidden dotted", G, "expected 'dashed' or 'off'"},
+      {"include \"parts.hls\"", S},
+      {"include parts", G, "expected a quoted file name after 'include'"},
+      {"return", S},
+      {"return x + 1", S},
+      {"x = 1", L},
+      {"vertex 1 = (0, 0, 0)", L},
+  });
+}
+
+TEST(Grammar, Script) {
+  check_rows<g::script>({{"", S},
+                         {"  # only a comment\n", S},
+                         {"let a = 1 let b = 2", S},
+                         {"let a = 1\n\ndraw a", S},
+                         {"draw a\n@", G, "expected a statement"}});
+}
+
+}  // namespace
+}  // namespace hlr::lang

@@ -1,0 +1,246 @@
+// Every line of DESIGN.md's sketch parses into the expected AST: node kinds, names, numbers, spans.
+#include "lang/parser.hpp"
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+namespace hlr::lang {
+namespace {
+
+Script parse_ok(const std::string& text) {
+  ParseResult result = parse(text, "test.hls");
+  std::string shown;
+  for (const auto& d : result.diagnostics) shown += format(d, *result.source);
+  EXPECT_TRUE(result.ok()) << shown;
+  return result.ok() ? std::move(*result.script) : Script{};
+}
+
+// The S-expression of a one-statement script.
+std::string ast(const std::string& text) {
+  const Script script = parse_ok(text);
+  return script.statements.size() == 1 ? dump(script.statements[0]) : "<" + dump(script) + ">";
+}
+
+std::string span_text(const std::string& text, const SourceSpan& span) {
+  return text.substr(span.begin.offset, span.end.offset - span.begin.offset);
+}
+
+const char* kSketch = R"(# comments with '#'
+solid lblock {                     # a solid: vertices and faces; declaring does not draw
+  vertex 1 = (0, 10, 0)            # vertex ids: integers or identifiers
+  vertex top = (0, 10, 5)
+  face 1 top 3 4                   # counter-clockwise seen from outside
+  face 5 6 7 8 hole 9 10 11        # a face with a hole
+  line 12 13                       # a marking line on the surface (drawn, hides nothing)
+}
+let m = import("bunny.off")        # OFF / OBJ / STL meshes
+def post(h) = prism(regular(6, 0.5), h)
+for i in 0..4 { draw post(1 + i) at translate(2*i, 0, 0) }
+draw lblock
+draw m at rotate(z: 30) then scale(2)
+camera main = lookat(eye: (30, 20, 15), target: (0, 0, 0), up: (0, 0, 1), fov: 40)
+camera albers = orbit(theta: 45, phi: 60, rho: 425, d: 1549)            # Albers' viewpoint
+camera cockpit = desens(object: (126, 0, 0), attitude: (0, 0, 0),       # Desens' 12 degrees
+                        observer: (1914, 151, 112.5), heading: (10, 0, 0),
+                        focal: 1.5, scale: 0.5)
+animate frames 48 fps 12           # whole script is evaluated per frame with frame, t (0..1), time
+output "landing-{frame:03}.pdf" paper A4 landscape
+style hidden dashed                # optional hidden-line layer (dashed in PDF, second pen on HPGL)
+)";
+
+TEST(Parser, DesignSketchAsAWhole) {
+  const Script script = parse_ok(kSketch);
+  EXPECT_EQ(
+      dump(script),
+      "(solid lblock (vertex 1 (vec 0 10 0)) (vertex top (vec 0 10 5)) (face 1 top 3 4) "
+      "(face 5 6 7 8 (hole 9 10 11)) (line 12 13))\n"
+      "(let m (call import \"bunny.off\"))\n"
+      "(def post (h) (call prism (call regular 6 0.5) h))\n"
+      "(for i (.. 0 4) (block (draw (call post (+ 1 i)) at (call translate (* 2 i) 0 0))))\n"
+      "(draw lblock)\n"
+      "(draw m at (then (call rotate z:30) (call scale 2)))\n"
+      "(camera main (call lookat eye:(vec 30 20 15) target:(vec 0 0 0) up:(vec 0 0 1) fov:40))\n"
+      "(camera albers (call orbit theta:45 phi:60 rho:425 d:1549))\n"
+      "(camera cockpit (call desens object:(vec 126 0 0) attitude:(vec 0 0 0) observer:(vec 1914 151 112.5) "
+      "heading:(vec 10 0 0) focal:1.5 scale:0.5))\n"
+      "(animate 48 fps 12)\n"
+      "(output (str \"landing-\" (fmt frame \"03\") \".pdf\") A4 landscape)\n"
+      "(style hidden dashed)\n");
+  ASSERT_EQ(script.statements.size(), 12U);
+  // Statement spans: from the keyword to the end of the statement, comments excluded.
+  const std::string text = kSketch;
+  EXPECT_EQ(span_text(text, script.statements[1].span), "let m = import(\"bunny.off\")");
+  EXPECT_EQ(script.statements[0].span.begin.line, 2U);
+  EXPECT_EQ(script.statements[0].span.end.line, 8U);
+  EXPECT_EQ(script.statements[8].span.begin.line, 16U);  // camera cockpit, over three lines
+  EXPECT_EQ(script.statements[8].span.end.line, 18U);
+  EXPECT_EQ(span_text(text, script.statements[11].span), "style hidden dashed");
+}
+
+TEST(Parser, SolidNodes) {
+  const std::string text =
+      "solid lblock {\n  vertex 1 = (0, 10, 0)\n  vertex top = (0, 10, 5)\n"
+      "  face 1 top 3 4\n  face 5 6 7 8 hole 9 10 11\n  line 12 13\n}\n";
+  const Script script = parse_ok(text);
+  const auto& solid = std::get<SolidStmt>(script.statements.at(0).node);
+  EXPECT_EQ(solid.name.text, "lblock");
+  EXPECT_EQ(span_text(text, solid.name.span), "lblock");
+  ASSERT_EQ(solid.items.size(), 5U);
+  const auto& v1 = std::get<VertexDecl>(solid.items[0].node);
+  EXPECT_TRUE(v1.id.is_number);
+  EXPECT_EQ(v1.id.number, 1);
+  EXPECT_EQ(span_text(text, solid.items[0].span), "vertex 1 = (0, 10, 0)");
+  const auto& pos = std::get<VectorLit>(v1.position->node);
+  EXPECT_EQ(std::get<NumberLit>(pos.components[1]->node).value, 10.0);
+  EXPECT_EQ(v1.position->span.begin.line, 2U);
+  EXPECT_EQ(v1.position->span.begin.column, 14U);
+  EXPECT_EQ(v1.position->span.end.column, 24U);  // one past the ")"
+  const auto& vtop = std::get<VertexDecl>(solid.items[1].node);
+  EXPECT_FALSE(vtop.id.is_number);
+  EXPECT_EQ(vtop.id.text, "top");
+  const auto& face = std::get<FaceDecl>(solid.items[2].node);
+  ASSERT_EQ(face.ids.size(), 4U);
+  EXPECT_EQ(face.ids[1].text, "top");
+  EXPECT_EQ(face.ids[1].span.begin.column, 10U);
+  const auto& holed = std::get<FaceDecl>(solid.items[3].node);
+  ASSERT_EQ(holed.holes.size(), 1U);
+  EXPECT_EQ(holed.holes[0].ids.size(), 3U);
+  EXPECT_EQ(span_text(text, holed.holes[0].span), "hole 9 10 11");
+  const auto& line = std::get<LineDecl>(solid.items[4].node);
+  EXPECT_EQ(line.from.number, 12);
+  EXPECT_EQ(line.to.number, 13);
+}
+
+TEST(Parser, CallsWithNamedArguments) {
+  const std::string text =
+      "camera main = lookat(eye: (30, 20, 15), target: (0, 0, 0), up: (0, 0, 1), fov: 40)";
+  const Script script = parse_ok(text);
+  const auto& cam = std::get<CameraStmt>(script.statements.at(0).node);
+  EXPECT_EQ(cam.name.text, "main");
+  const auto& call = std::get<CallExpr>(cam.value->node);
+  EXPECT_EQ(std::get<NameRef>(call.callee->node).name, "lookat");
+  ASSERT_EQ(call.args.size(), 4U);
+  EXPECT_EQ(call.args[0].label->text, "eye");
+  EXPECT_EQ(span_text(text, call.args[0].span), "eye: (30, 20, 15)");
+  EXPECT_EQ(span_text(text, call.args[0].label->span), "eye");
+  EXPECT_EQ(call.args[3].label->text, "fov");
+  EXPECT_TRUE(std::get<NumberLit>(call.args[3].value->node).integer);
+  EXPECT_EQ(span_text(text, cam.value->span), text.substr(14));
+}
+
+TEST(Parser, OneLineForLoop) {
+  const Script script = parse_ok("for i in 0..4 { draw post(1 + i) at translate(2*i, 0, 0) }");
+  const auto& loop = std::get<ForStmt>(script.statements.at(0).node);
+  EXPECT_EQ(loop.variable.text, "i");
+  EXPECT_EQ(std::get<BinaryExpr>(loop.iterable->node).op, BinaryOp::Range);
+  ASSERT_EQ(loop.body.statements.size(), 1U);
+  const auto& draw = std::get<DrawStmt>(loop.body.statements[0].node);
+  ASSERT_TRUE(draw.transform);
+  EXPECT_EQ(draw.transform->span.begin.column, 37U);
+  EXPECT_EQ(loop.body.span.begin.column, 15U);
+}
+
+TEST(Parser, Precedence) {
+  EXPECT_EQ(ast("let x = 1 + 2 * 3 - 4 / 5 % 6"), "(let x (- (+ 1 (* 2 3)) (% (/ 4 5) 6)))");
+  EXPECT_EQ(ast("let x = -a * -b"), "(let x (* (- a) (- b)))");
+  EXPECT_EQ(ast("let x = 0..n - 1"), "(let x (.. 0 (- n 1)))");
+  EXPECT_EQ(ast("let x = -2..2"), "(let x (.. (- 2) 2))");
+  EXPECT_EQ(ast("let x = a + 1 < b * 2"), "(let x (< (+ a 1) (* b 2)))");
+  EXPECT_EQ(ast("let x = not a == b"), "(let x (not (== a b)))");
+  EXPECT_EQ(ast("let x = a or b and c"), "(let x (or a (and b c)))");
+  EXPECT_EQ(ast("let x = a and b or c"), "(let x (or (and a b) c))");
+  EXPECT_EQ(ast("let x = a or b then c"), "(let x (then (or a b) c))");
+  EXPECT_EQ(ast("let x = rotate(z: 30) then scale(2) then translate(1, 0, 0)"),
+            "(let x (then (then (call rotate z:30) (call scale 2)) (call translate 1 0 0)))");
+  EXPECT_EQ(ast("let x = (1 + 2) * 3"), "(let x (* (+ 1 2) 3))");
+  EXPECT_EQ(ast("let x = -v.x"), "(let x (- (. v x)))");
+  EXPECT_EQ(ast("let x = l[0].y(2)[1]"), "(let x (index (call (. (index l 0) y) 2) 1))");
+  EXPECT_EQ(ast("let x = a != b"), "(let x (!= a b))");
+  EXPECT_EQ(ast("let x = a >= b"), "(let x (>= a b))");
+}
+
+TEST(Parser, Literals) {
+  EXPECT_EQ(ast("let x = [1, 2.5, 1e3, 1.5E-2, true, false, \"s\", (1, 2, 3), []]"),
+            "(let x (list 1 2.5 1000 0.015 true false \"s\" (vec 1 2 3) (list)))");
+  EXPECT_EQ(ast("let s = \"a\\\"b\\\\c\\{d\\}\""), "(let s \"a\\\"b\\\\c{d}\")");
+  EXPECT_EQ(ast("let s = \"{n} items, {x * 2:.2f}\""),
+            "(let s (str (fmt n) \" items, \" (fmt (* x 2) \".2f\")))");
+  EXPECT_EQ(ast("let s = \"\""), "(let s \"\")");
+  const Script script = parse_ok("let n = 48\nlet d = 48.0\n");
+  EXPECT_TRUE(std::get<NumberLit>(std::get<LetStmt>(script.statements[0].node).value->node).integer);
+  EXPECT_FALSE(std::get<NumberLit>(std::get<LetStmt>(script.statements[1].node).value->node).integer);
+}
+
+TEST(Parser, Definitions) {
+  EXPECT_EQ(ast("def post(h) = prism(regular(6, 0.5), h)"),
+            "(def post (h) (call prism (call regular 6 0.5) h))");
+  EXPECT_EQ(ast("def f(a, n = 6) = a * n"), "(def f (a n=6) (* a n))");
+  EXPECT_EQ(ast("def g() = 1"), "(def g () 1)");
+  EXPECT_EQ(ast("def step(i) {\n  let h = i * 0.2\n  return box(1, 1, h)\n}"),
+            "(def step (i) (block (let h (* i 0.2)) (return (call box 1 1 h))))");
+  EXPECT_EQ(ast("def nothing() { return }"), "(def nothing () (block (return)))");
+  const Script script = parse_ok("def f(a, n = 6) = a * n");
+  const auto& def = std::get<DefStmt>(script.statements[0].node);
+  EXPECT_FALSE(def.body);
+  ASSERT_EQ(def.params.size(), 2U);
+  EXPECT_FALSE(def.params[0].default_value);
+  EXPECT_TRUE(def.params[1].default_value);
+  EXPECT_EQ(def.params[1].name.span.begin.column, 10U);
+}
+
+TEST(Parser, ControlFlow) {
+  EXPECT_EQ(ast("if a > 1 { draw x } else { draw y }"), "(if (> a 1) (block (draw x)) (block (draw y)))");
+  EXPECT_EQ(ast("if a { draw x } else if b { draw y }"),
+            "(if a (block (draw x)) (block (if b (block (draw y)))))");
+  EXPECT_EQ(ast("for p in [a, b] { for i in 0..2 { draw p at translate(i, 0, 0) } }"),
+            "(for p (list a b) (block (for i (.. 0 2) (block (draw p at (call translate i 0 0))))))");
+}
+
+TEST(Parser, Settings) {
+  EXPECT_EQ(ast("animate frames 48"), "(animate 48)");
+  EXPECT_EQ(ast("animate frames n * 2 fps 24"), "(animate (* n 2) fps 24)");
+  EXPECT_EQ(ast("output \"scene.svg\""), "(output \"scene.svg\")");
+  EXPECT_EQ(ast("output \"a.pdf\" portrait"), "(output \"a.pdf\" portrait)");
+  EXPECT_EQ(ast("paper A3 landscape"), "(paper A3 landscape)");
+  EXPECT_EQ(ast("style hidden off"), "(style hidden off)");
+  EXPECT_EQ(ast("include \"parts.hls\""), "(include \"parts.hls\")");
+  const Script script = parse_ok("output \"x.pdf\" paper A4 landscape");
+  const auto& out = std::get<OutputStmt>(script.statements[0].node);
+  EXPECT_EQ(out.paper.size->text, "A4");
+  EXPECT_EQ(out.paper.orientation, Orientation::Landscape);
+}
+
+TEST(Parser, NewlinesAreWhitespace) {
+  const Script a = parse_ok("draw a draw b let c = 1");
+  const Script b = parse_ok("draw a\ndraw b\nlet c =\n  1");
+  EXPECT_EQ(dump(a), dump(b));
+  EXPECT_EQ(a.statements.size(), 3U);
+  // Contextual words stay names outside their place.
+  EXPECT_EQ(ast("let line = face + vertex + frames + hidden"),
+            "(let line (+ (+ (+ face vertex) frames) hidden))");
+}
+
+TEST(Parser, UnicodeAndTabsInColumns) {
+  const std::string text = "let s = \"é\"\tlet t = 2";
+  const Script script = parse_ok(text);
+  // 'é' is two bytes but one column; the tab is one column.
+  EXPECT_EQ(script.statements[1].span.begin.column, 13U);
+  EXPECT_EQ(script.statements[1].span.begin.offset, 13U);
+}
+
+TEST(Parser, EmptyScripts) {
+  EXPECT_EQ(parse_ok("").statements.size(), 0U);
+  EXPECT_EQ(parse_ok("# nothing\n\n   \n").statements.size(), 0U);
+}
+
+TEST(Parser, FileIdTravelsInSpans) {
+  ParseResult result = parse("let x = 1", "inc.hls", 7);
+  ASSERT_TRUE(result.ok());
+  EXPECT_EQ(result.script->file, 7U);
+  EXPECT_EQ(result.script->statements[0].span.file, 7U);
+  EXPECT_EQ(std::get<LetStmt>(result.script->statements[0].node).value->span.file, 7U);
+}
+
+}  // namespace
+}  // namespace hlr::lang
