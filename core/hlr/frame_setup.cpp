@@ -205,11 +205,8 @@ void add_edge_candidates(FrameSetup& part, std::uint32_t o, const Solid& solid,
     Candidate c;
     c.object = o;
     c.edge = e;
-    c.own_object0 = c.own_object1 = o;
     c.own_face0 = edge.left;
     c.own_face1 = edge.right;
-    c.world0 = solid.vertices[edge.v0];
-    c.world1 = solid.vertices[edge.v1];
     c.view0 = view_vertices[edge.v0];
     c.view1 = view_vertices[edge.v1];
     c.culled = culled;
@@ -229,13 +226,11 @@ void clip_and_project(FrameSetup& part, std::size_t from, const Camera& camera, 
       if (z0 < near && z1 < near) continue;
       if (z0 < near || z1 < near) {
         const double t = (near - z0) / (z1 - z0);
-        const Point3 w = lerp(c.world0, c.world1, t), v = lerp(c.view0, c.view1, t);
+        const Point3 v = lerp(c.view0, c.view1, t);
         if (z0 < near) {
-          c.world0 = w;
           c.view0 = v;
           c.view0.z = near;
         } else {
-          c.world1 = w;
           c.view1 = v;
           c.view1.z = near;
         }
@@ -311,6 +306,13 @@ FrameSetup prepare_frame(const Scene& scene, const Camera& camera, bool intersec
         const double max_abs = std::max({std::abs(b.xmin), std::abs(b.xmax), std::abs(b.ymin), std::abs(b.ymax)});
         occ.picture_tolerance = Tolerance::picture(max_abs, camera.focal, ltol, view.perspective ? occ.min_depth : 1.0);
       }
+      // Parts wait for the join at their exact size: the slack of vectors grown by doubling, summed over
+      // all parts, would otherwise add up to a second copy at the frame's peak.
+      part.polygon_points.shrink_to_fit();
+      part.polygon_seams.shrink_to_fit();
+      part.ring_ends.shrink_to_fit();
+      part.occluders.shrink_to_fit();
+      part.candidates.shrink_to_fit();
     }
   };
   threads = std::min<std::size_t>(threads ? threads : std::max(1u, std::thread::hardware_concurrency()), chunks);
@@ -320,15 +322,32 @@ FrameSetup prepare_frame(const Scene& scene, const Camera& camera, bool intersec
     std::vector<std::jthread> pool;
     for (unsigned t = 0; t < threads; ++t) pool.emplace_back(run);
   }
+  std::size_t points = 0, rings = 0, occluders = 0, candidates = 0;
+  for (const FrameSetup& part : parts) {
+    points += part.polygon_points.size();
+    rings += part.ring_ends.size();
+    occluders += part.occluders.size();
+    candidates += part.candidates.size();
+  }
+  setup.polygon_points.reserve(points);
+  setup.polygon_seams.reserve(points);
+  setup.ring_ends.reserve(rings);
+  setup.occluders.reserve(occluders);
+  setup.candidates.reserve(candidates);
   for (FrameSetup& part : parts) {
     append(setup, std::move(part));
     part = FrameSetup{};  // release as we go: peak memory stays near one copy
   }
 
   if (intersection_lines) {
-    const std::size_t from = setup.candidates.size();
-    add_intersection_candidates(scene, camera, facing, cull, ltol, keep_culled, setup);
-    clip_and_project(setup, from, camera, ltol);
+    // Collected apart and appended at their exact count, so the large candidate list grows once.
+    FrameSetup crossings;
+    add_intersection_candidates(scene, camera, facing, cull, ltol, keep_culled, crossings);
+    clip_and_project(crossings, 0, camera, ltol);
+    if (!crossings.candidates.empty()) {
+      setup.candidates.reserve(setup.candidates.size() + crossings.candidates.size());
+      append(setup, std::move(crossings));
+    }
   }
   return setup;
 }

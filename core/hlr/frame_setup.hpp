@@ -36,14 +36,18 @@ struct Candidate {
   std::uint32_t edge = 0;
   std::uint32_t other = 0;
   SegmentSource source = SegmentSource::Edge;
-  // Faces that must not be tested against this edge (its own faces): (object, face) pairs.
-  std::uint32_t own_object0 = 0, own_object1 = 0;
+  bool culled = false;  // hidden by the back-face rules alone (no occlusion test needed)
+  // Faces that must not be tested against this edge (its own faces): (own_object0(), own_face0) and
+  // (own_object1(), own_face1).
   FaceIndex own_face0 = kNoFace, own_face1 = kNoFace;
-  Point3 world0, world1;  // world points of the clipped ends
-  Point3 view0, view1;    // view points of the clipped ends
+  // View points of the clipped ends. World points are not stored (the candidate list is the frame's
+  // largest structure): they are the camera's inverse applied to these.
+  Point3 view0, view1;
   Point2 pic0, pic1;      // picture points of the clipped ends
-  bool culled = false;    // hidden by the back-face rules alone (no occlusion test needed)
   double picture_tolerance = 0;  // Tolerance::picture of its end points (set_picture_tolerance)
+
+  std::uint32_t own_object0() const { return object; }
+  std::uint32_t own_object1() const { return source == SegmentSource::Intersection ? other : object; }
 };
 
 struct FrameSetup {

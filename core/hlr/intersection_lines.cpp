@@ -169,14 +169,10 @@ void add_intersection_candidates(const Scene& scene, const Camera& camera,
               c.object = static_cast<std::uint32_t>(i);
               c.other = static_cast<std::uint32_t>(j);
               c.edge = piece_index++;
-              c.own_object0 = static_cast<std::uint32_t>(i);
               c.own_face0 = a.face;
-              c.own_object1 = static_cast<std::uint32_t>(j);
               c.own_face1 = b.face;
-              c.world0 = origin + lo * dir;
-              c.world1 = origin + hi * dir;
-              c.view0 = camera.view(c.world0);
-              c.view1 = camera.view(c.world1);
+              c.view0 = camera.view(origin + lo * dir);
+              c.view1 = camera.view(origin + hi * dir);
               c.culled = culled;
               setup.candidates.push_back(c);
             }

@@ -62,8 +62,8 @@ void add_hidden_intervals(const FrameSetup& setup, const Camera& camera, const C
   // A seam covers a point only through the neighbour across it, which must not be the edge's own face.
   auto is_seam = [&](std::uint32_t i) {
     const FaceIndex n = seams[i];
-    return n != kNoFace && !(o.object == c.own_object0 && n == c.own_face0) &&
-           !(o.object == c.own_object1 && n == c.own_face1);
+    return n != kNoFace && !(o.object == c.own_object0() && n == c.own_face0) &&
+           !(o.object == c.own_object1() && n == c.own_face1);
   };
   std::uint32_t ends_buf[64];
   std::vector<std::uint32_t> ends_heap;

@@ -1,6 +1,7 @@
 #include "core/hlr/render_frame.hpp"
 
 #include <algorithm>
+#include <memory>
 #include <atomic>
 #include <optional>
 #include <thread>
@@ -21,11 +22,8 @@ bool clip_to_frame(Candidate& c, const Camera& camera) {
   const auto [s0, s1] = *range;
   if (s0 <= 0 && s1 >= 1) return true;
   const double t0 = view_param(c, camera, s0), t1 = view_param(c, camera, s1);
-  const Point3 w0 = lerp(c.world0, c.world1, t0), w1 = lerp(c.world0, c.world1, t1);
   const Point3 v0 = lerp(c.view0, c.view1, t0), v1 = lerp(c.view0, c.view1, t1);
   const Point2 p0 = lerp(c.pic0, c.pic1, s0), p1 = lerp(c.pic0, c.pic1, s1);
-  c.world0 = w0;
-  c.world1 = w1;
   c.view0 = v0;
   c.view1 = v1;
   c.pic0 = p0;
@@ -34,7 +32,7 @@ bool clip_to_frame(Candidate& c, const Camera& camera) {
 }
 
 bool is_own_face(const Candidate& c, const Occluder& o) {
-  return (o.object == c.own_object0 && o.face == c.own_face0) || (o.object == c.own_object1 && o.face == c.own_face1);
+  return (o.object == c.own_object0() && o.face == c.own_face0) || (o.object == c.own_object1() && o.face == c.own_face1);
 }
 
 struct Worker {
@@ -42,6 +40,7 @@ struct Worker {
   const Camera& camera;
   const FaceGrid& grid;
   const HlrOptions& options;
+  Affine3 world_from_view;
   std::vector<std::uint32_t> stamp;
   OcclusionScratch scratch;
   IntervalSet hidden;
@@ -54,8 +53,8 @@ struct Worker {
   void emit(const Candidate& c, double t0, double t1, bool is_hidden, std::vector<VisibleSegment>& out) {
     const double s0 = picture_param(c, camera, t0), s1 = picture_param(c, camera, t1);
     VisibleSegment seg;
-    seg.p0 = lerp(c.world0, c.world1, t0);
-    seg.p1 = lerp(c.world0, c.world1, t1);
+    seg.p0 = world_from_view.apply(lerp(c.view0, c.view1, t0));
+    seg.p1 = world_from_view.apply(lerp(c.view0, c.view1, t1));
     seg.s0 = lerp(c.pic0, c.pic1, s0);
     seg.s1 = lerp(c.pic0, c.pic1, s1);
     if (distance(seg.s0, seg.s1) <= c.picture_tolerance) return;
@@ -122,7 +121,7 @@ FrameResult render_frame(const Scene& scene, const Camera& camera, const HlrOpti
     if (c.source == SegmentSource::Intersection) ++result.stats.intersection_lines;
   if (setup.candidates.empty()) return result;
 
-  const FaceGrid grid(setup.occluders, domain);
+  auto grid = std::make_unique<const FaceGrid>(setup.occluders, domain);
 
   // Candidates are split into chunks; each chunk's output is kept apart and joined in order, so the
   // result does not depend on the number of threads.
@@ -134,11 +133,17 @@ FrameResult render_frame(const Scene& scene, const Camera& camera, const HlrOpti
   threads = std::min<unsigned>(threads, chunks);
   std::atomic<std::uint32_t> next{0};
   std::atomic<std::size_t> face_tests{0};
+  const Affine3 world_from_view = camera.viewFromWorld.inverse();
   auto run = [&] {
-    Worker w{setup, camera, grid, options, std::vector<std::uint32_t>(setup.occluders.size(), 0), {}, {}, 0};
+    Worker w{setup, camera, *grid, options, world_from_view, std::vector<std::uint32_t>(setup.occluders.size(), 0), {}, {}, 0};
+    // Each chunk's pieces go through one reused buffer and are stored at their exact size: growing every
+    // chunk's vector by doubling would hold up to twice the output in slack at the frame's peak.
+    std::vector<VisibleSegment> buffer;
     for (std::uint32_t k; (k = next.fetch_add(1)) < chunks;) {
       const std::uint32_t end = std::min(n, (k + 1) * kChunk);
-      for (std::uint32_t i = k * kChunk; i < end; ++i) w.process(i, outputs[k]);
+      buffer.clear();
+      for (std::uint32_t i = k * kChunk; i < end; ++i) w.process(i, buffer);
+      outputs[k].assign(buffer.begin(), buffer.end());
     }
     face_tests += w.face_tests;
   };
@@ -148,7 +153,16 @@ FrameResult render_frame(const Scene& scene, const Camera& camera, const HlrOpti
     std::vector<std::jthread> pool;
     for (unsigned t = 0; t < threads; ++t) pool.emplace_back(run);
   }
-  for (auto& part : outputs) result.segments.insert(result.segments.end(), part.begin(), part.end());
+  // The inputs are no longer needed; free them before the join, which briefly holds the output twice.
+  grid.reset();
+  setup = FrameSetup{};
+  std::size_t total = 0;
+  for (const auto& part : outputs) total += part.size();
+  result.segments.reserve(total);
+  for (auto& part : outputs) {
+    result.segments.insert(result.segments.end(), part.begin(), part.end());
+    std::vector<VisibleSegment>().swap(part);
+  }
   result.stats.face_tests = face_tests;
   result.stats.visible_segments = static_cast<std::size_t>(
       std::count_if(result.segments.begin(), result.segments.end(), [](const VisibleSegment& s) { return !s.hidden; }));
