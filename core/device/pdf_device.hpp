@@ -1,5 +1,5 @@
 // PDF through cairo: one page per frame, the drawing fitted and centred on the paper with one uniform
-// scale, hidden pieces dashed. (The full device set — SVG, PNG, paper sizes, pens — grows from here.)
+// scale (core/device/page_layout.hpp, shared with the JSON device), hidden pieces dashed.
 #pragma once
 
 #include <filesystem>
@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "core/device/page_layout.hpp"
 #include "core/geometry/rect2.hpp"
 #include "core/hlr/visible_segment.hpp"
 
@@ -15,7 +16,7 @@ namespace hlr {
 struct DrawingPage {
   std::vector<VisibleSegment> segments;
   std::optional<Rect2> frame;  // drawn as a border and used for fitting when present
-  std::string caption;         // printed under the drawing
+  std::string caption;         // printed in the bottom margin
 };
 
 struct PdfOptions {
@@ -24,6 +25,8 @@ struct PdfOptions {
   double margin_mm = 12;
   double line_width_mm = 0.25;
   std::string title;  // PDF metadata
+
+  PageSpec page_spec() const { return {{page_width_mm, page_height_mm}, margin_mm}; }
 };
 
 void write_pdf(const std::filesystem::path& target, const std::vector<DrawingPage>& pages,

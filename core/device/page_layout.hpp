@@ -1,0 +1,69 @@
+// Paper sizes and the mapping of a drawing onto a page, shared by every device so that PDF, SVG, JSON
+// (and HPGL, after its own flip) put each piece at the same millimetres.
+//
+// Page coordinates are millimetres from the page's top-left corner with y growing downwards, as PDF and
+// SVG draw; picture coordinates grow upwards, so the mapping flips y. The drawing (the camera frame when
+// there is one, else the bounds of the pieces) is fitted into the page minus its margins with one
+// uniform scale and centred. A caption, when a device prints one, lives in the bottom margin and does
+// not move the drawing.
+#pragma once
+
+#include <optional>
+#include <string_view>
+#include <vector>
+
+#include "core/geometry/rect2.hpp"
+#include "core/geometry/vector.hpp"
+#include "core/hlr/visible_segment.hpp"
+
+namespace hlr {
+
+struct Paper {
+  double width_mm = 297;  // A4 landscape
+  double height_mm = 210;
+};
+
+// Named sizes A0–A6, Letter, Legal, Tabloid, matched case-insensitively ("A4", "a4", "letter").
+// Portrait (width < height) unless `landscape`; nullopt for an unknown name.
+std::optional<Paper> paper_by_name(std::string_view name, bool landscape = false);
+// The accepted names in their canonical spelling, for error messages.
+const std::vector<std::string_view>& paper_names();
+
+struct PageSpec {
+  Paper paper;
+  double margin_mm = 12;  // on all four sides
+};
+
+struct PageLayout {
+  double page_width_mm = 297;
+  double page_height_mm = 210;
+  double scale = 1;       // millimetres per picture unit
+  Point2 picture_centre;  // picture point that lands on the page centre
+
+  // Computed about the centre, not from origin(): keeps precision when the picture sits far from (0, 0).
+  Point2 to_page_mm(Point2 picture) const {
+    return {0.5 * page_width_mm + scale * (picture.x - picture_centre.x),
+            0.5 * page_height_mm - scale * (picture.y - picture_centre.y)};
+  }
+  // Page position (mm, top-left, y down) of the picture point (0, 0): to_page_mm(p) = origin + s·(x, −y).
+  Point2 origin() const { return to_page_mm(Point2{0, 0}); }
+};
+
+// Throws DeviceError naming the problem when the paper is not finite and positive or the margins leave
+// no room; devices call it before creating any file.
+void check_page_spec(const PageSpec& spec);
+
+// Fits `extent` into the page. An empty extent (nothing to draw) maps the picture origin to the page
+// centre at scale 1; a degenerate one (a point, a line) is fitted along its non-zero side, and a point
+// lands at the centre. Throws as check_page_spec() does.
+PageLayout fit_rect_to_page(const Rect2& extent, const PageSpec& spec);
+
+// The extent a device fits: `frame` when present, else the bounds of the pieces' picture end points.
+Rect2 drawing_extent(const std::optional<Rect2>& frame, const std::vector<VisibleSegment>& segments);
+
+inline PageLayout fit_to_page(const std::optional<Rect2>& frame, const std::vector<VisibleSegment>& segments,
+                              const PageSpec& spec) {
+  return fit_rect_to_page(drawing_extent(frame, segments), spec);
+}
+
+}  // namespace hlr
