@@ -1,0 +1,455 @@
+// From a raw mesh to a validated Solid: exact welding, per-face repairs (repeated vertices, degenerate
+// and duplicate faces, non-planar polygons), then SolidBuilder (winding, manifoldness, edge kinds), whose
+// diagnostics are mapped back to the file's own face numbers and lines.
+#include <algorithm>
+#include <bit>
+#include <cctype>
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <optional>
+#include <unordered_map>
+
+#include "core/solid/solid_builder.hpp"
+#include "core/tolerance.hpp"
+#include "stdlib/mesh_detail.hpp"
+
+namespace hlr::stdlib::mesh_detail {
+
+namespace {
+
+constexpr std::size_t kWarningsPerKind = 10;
+// Total work allowed for ear clipping in one import (vertex visits): plenty for real data, a bound for
+// adversarial files with huge non-planar polygons.
+constexpr std::int64_t kTriangulationBudget = 400'000'000;
+
+// Diagnostic tags carry what they point at: kind in the high bits, index below.
+enum class TagKind : std::int64_t { Vertex = 1, Face = 2, Line = 3 };
+std::int64_t make_tag(TagKind kind, std::size_t index) {
+  return (static_cast<std::int64_t>(kind) << 40) | static_cast<std::int64_t>(index);
+}
+
+std::string number_text(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%g", v);
+  return buf;
+}
+
+// Warnings in the order found, at most kWarningsPerKind of each kind, then one line with the rest.
+class Warnings {
+ public:
+  void add(const std::string& kind, MeshProblem problem) {
+    auto [it, fresh] = counts_.try_emplace(kind, 0);
+    if (fresh) order_.push_back(kind);
+    if (++it->second <= kWarningsPerKind) {
+      problems_.push_back(std::move(problem));
+      if (it->second == 1) file_of_[kind] = problems_.back().file;
+    }
+  }
+  std::vector<MeshProblem> finish() {
+    for (const std::string& kind : order_) {
+      const std::size_t n = counts_[kind];
+      if (n > kWarningsPerKind)
+        problems_.push_back(
+            {file_of_[kind], 0, 0,
+             std::to_string(n - kWarningsPerKind) + " more warnings of this kind [" + kind + "]", ""});
+    }
+    return std::move(problems_);
+  }
+
+ private:
+  std::vector<MeshProblem> problems_;
+  std::map<std::string, std::size_t> counts_;
+  std::map<std::string, std::string> file_of_;
+  std::vector<std::string> order_;
+};
+
+class Builder {
+ public:
+  Builder(RawMesh& raw, const MeshImportOptions& options) : raw_(raw), options_(options) {
+    for (MeshProblem& p : raw_.warnings) warnings_.add("parse", std::move(p));
+  }
+
+  ImportedMesh run() {
+    weld();
+    seen_.reserve(raw_.faces.size());  // faces already read: backed by data
+    for (std::size_t f = 0; f < raw_.faces.size(); ++f) add_face(f);
+    for (std::size_t l = 0; l < raw_.lines.size(); ++l) add_line(l);
+    if (faces_.empty() && lines_.empty())
+      fail(raw_.files.back(), 0, 0,
+           raw_.faces.empty() ? "the file defines no faces" : "every face of the file is degenerate",
+           "a mesh needs at least one face with three distinct, non-collinear vertices");
+    return build();
+  }
+
+ private:
+  struct BuiltFace {
+    std::vector<std::uint32_t> ring;  // raw vertex indices (canonical after welding)
+    std::size_t raw;                  // index of the file's face
+  };
+  struct BuiltLine {
+    std::uint32_t a, b;
+    std::size_t raw;
+  };
+
+  MeshProblem at(const Source& s, std::string message, std::string hint = {}) const {
+    return {raw_.files[static_cast<std::size_t>(s.file)], s.line, s.column, std::move(message),
+            std::move(hint)};
+  }
+  std::string face_name(std::size_t f) const {
+    std::string s = std::string(raw_.face_noun) + " " + std::to_string(f + 1);
+    if (raw_.faces[f].where.offset >= 0)
+      s += " (byte offset " + std::to_string(raw_.faces[f].where.offset) + ")";
+    return s;
+  }
+  std::string vertex_name(std::uint32_t v) const {
+    return std::to_string(static_cast<std::int64_t>(v) + raw_.vertex_base);
+  }
+  [[noreturn]] void fail_at(const Source& s, std::string message, std::string hint = {}) const {
+    throw MeshImportError(at(s, std::move(message), std::move(hint)));
+  }
+
+  // Exact duplicates become one vertex (-0 and +0 are equal). Reported unless the format has no indices.
+  void weld() {
+    const std::size_t n = raw_.vertices.size();
+    canon_.resize(n);
+    std::vector<bool> used(n, false);
+    for (const RawFace& f : raw_.faces)
+      for (std::uint32_t v : f.vertices) used[v] = true;
+    for (const RawLine& l : raw_.lines) used[l.a] = used[l.b] = true;
+    struct KeyHash {
+      std::size_t operator()(const std::array<std::uint64_t, 3>& k) const {
+        return static_cast<std::size_t>((k[0] * 0x9E3779B97F4A7C15ull) ^ (k[1] * 0xC2B2AE3D27D4EB4Full) ^
+                                        (k[2] * 0x165667B19E3779F9ull));
+      }
+    };
+    std::unordered_map<std::array<std::uint64_t, 3>, std::uint32_t, KeyHash> first;
+    first.reserve(n);  // n vertices were read, so this is backed by data
+    positions_.reserve(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      const Point3 p = raw_.vertices[i].position;
+      positions_.push_back(p);
+      const std::array<std::uint64_t, 3> key{std::bit_cast<std::uint64_t>(p.x + 0.0),
+                                             std::bit_cast<std::uint64_t>(p.y + 0.0),
+                                             std::bit_cast<std::uint64_t>(p.z + 0.0)};
+      const auto [it, fresh] = first.try_emplace(key, static_cast<std::uint32_t>(i));
+      canon_[i] = it->second;
+      if (!fresh && used[i] && !raw_.welded_by_format)
+        warnings_.add("merged-vertex", at(raw_.vertices[i].where,
+                                          "vertex " + vertex_name(static_cast<std::uint32_t>(i)) +
+                                              " is at the same position as vertex " +
+                                              vertex_name(it->second) + "; merged them",
+                                          "list each vertex once and reuse its index"));
+    }
+  }
+
+  void add_face(std::size_t f) {
+    const RawFace& face = raw_.faces[f];
+    const std::string name = face_name(f);
+    std::vector<std::uint32_t> ring;
+    bool repeated = false;
+    std::uint32_t repeated_vertex = 0;
+    for (std::uint32_t raw_v : face.vertices) {
+      const std::uint32_t v = canon_[raw_v];
+      if (!ring.empty() && ring.back() == v) {
+        if (!repeated) repeated_vertex = v;
+        repeated = true;
+        continue;
+      }
+      ring.push_back(v);
+    }
+    while (ring.size() > 1 && ring.back() == ring.front()) {
+      if (!repeated) repeated_vertex = ring.back();
+      repeated = true;
+      ring.pop_back();
+    }
+    std::vector<std::uint32_t> distinct = ring;
+    std::sort(distinct.begin(), distinct.end());
+    distinct.erase(std::unique(distinct.begin(), distinct.end()), distinct.end());
+    if (distinct.size() < 3) {
+      warnings_.add(
+          "degenerate-face",
+          at(face.where,
+             name + " has only " + std::to_string(distinct.size()) +
+                 (distinct.size() == 1 ? " distinct vertex" : " distinct vertices") + "; dropped it",
+             "a face needs at least three distinct vertices"));
+      return;
+    }
+
+    // Geometry: Newell normal, size, and the worst distance from the plane through the centroid.
+    const std::vector<Point3>& pos = positions_;
+    const Vector3 normal = newell_normal(pos, Ring{ring});
+    Point3 lo = pos[ring[0]], hi = lo;
+    Vector3 sum{};
+    for (std::uint32_t v : ring) {
+      lo = {std::min(lo.x, pos[v].x), std::min(lo.y, pos[v].y), std::min(lo.z, pos[v].z)};
+      hi = {std::max(hi.x, pos[v].x), std::max(hi.y, pos[v].y), std::max(hi.z, pos[v].z)};
+      sum += to_vector(pos[v]);
+    }
+    const double size = distance(lo, hi);
+    // The builder's zero-area floor is kRelative · size²; dropping up to 4× that keeps us clear of it.
+    if (!(length(normal) > 4 * Tolerance::kRelative * std::max(size, 1e-300) * size)) {
+      warnings_.add("degenerate-face",
+                    at(face.where, name + " has zero area (its vertices are collinear); dropped it",
+                       "remove the face from the file"));
+      return;
+    }
+    if (repeated)
+      warnings_.add("repeated-vertex", at(face.where,
+                                          name + " lists vertex " + vertex_name(repeated_vertex) +
+                                              " twice in a row; dropped the repeat",
+                                          ""));
+    if (is_duplicate(ring, f)) return;
+
+    const Vector3 unit = normalize(normal);
+    const Point3 centroid = to_point(sum / static_cast<double>(ring.size()));
+    double worst = 0;
+    std::uint32_t worst_vertex = ring[0];
+    for (std::uint32_t v : ring) {
+      const double d = std::abs(dot(pos[v] - centroid, unit));
+      if (d > worst) worst = d, worst_vertex = v;
+    }
+    // Half the builder's planarity tolerance, so no face we pass on can fail its check.
+    const bool simple = distinct.size() == ring.size();  // rings with bridges go to the builder as loops
+    if (simple && ring.size() > 3 && worst > 0.5 * Tolerance::kPlanarity * size) {
+      std::vector<Triangle> triangles;
+      if (!triangulate(pos, ring, normal, triangles, budget_))
+        fail_at(face.where,
+                name + " is not planar and has too many vertices (" + std::to_string(ring.size()) +
+                    ") to triangulate",
+                "split the polygon into planar faces before importing");
+      std::size_t kept = 0;
+      for (const Triangle& t : triangles) {
+        const double tsize = std::max(
+            {distance(pos[t[0]], pos[t[1]]), distance(pos[t[1]], pos[t[2]]), distance(pos[t[2]], pos[t[0]])});
+        if (!(length(cross(pos[t[1]] - pos[t[0]], pos[t[2]] - pos[t[0]])) >
+              4 * Tolerance::kRelative * tsize * tsize))
+          continue;  // a sliver between collinear vertices: no area to draw
+        push_face({t.begin(), t.end()}, f);
+        ++kept;
+      }
+      warnings_.add("non-planar", at(face.where,
+                                     name + " is not planar (vertex " + vertex_name(worst_vertex) + " lies " +
+                                         number_text(worst) + " off its plane); split it into " +
+                                         std::to_string(kept) + " triangles",
+                                     "the split lines are drawn unless a crease angle hides them; model the "
+                                     "polygon as planar faces to avoid them"));
+      return;
+    }
+    push_face(std::move(ring), f);
+  }
+
+  // A face with the same cycle of vertices as an earlier one (either direction) is dropped. Faces are
+  // compared by two independent 64-bit hashes of that cycle: a false match among 10^7 faces has odds
+  // near 10^-25, and no face has to be stored twice.
+  bool is_duplicate(const std::vector<std::uint32_t>& ring, std::size_t f) {
+    std::vector<std::uint32_t> r = ring;
+    std::rotate(r.begin(), std::min_element(r.begin(), r.end()), r.end());
+    std::vector<std::uint32_t> back(r.rbegin(), r.rend());
+    std::rotate(back.begin(), std::min_element(back.begin(), back.end()), back.end());
+    const std::vector<std::uint32_t>& key = std::min(r, back);
+    FaceKey h{key.size(), ~std::uint64_t{key.size()}};
+    for (std::uint32_t v : key) {
+      h.a = (h.a ^ v) * 0x100000001B3ull;                               // FNV-1a style
+      h.b = (h.b + v + 0x9E3779B97F4A7C15ull) * 0xBF58476D1CE4E5B9ull;  // splitmix style
+      h.b ^= h.b >> 31;
+    }
+    const auto [it, fresh] = seen_.try_emplace(h, f);
+    if (fresh) return false;
+    warnings_.add("duplicate-face",
+                  at(raw_.faces[f].where, face_name(f) + " repeats " + face_name(it->second) + "; dropped it",
+                     "remove the duplicate from the file"));
+    return true;
+  }
+
+  void push_face(std::vector<std::uint32_t> ring, std::size_t f) {
+    if (faces_.size() >= options_.max_faces)
+      fail_at(raw_.faces[f].where,
+              "the mesh has more than " + std::to_string(options_.max_faces) +
+                  " faces after splitting non-planar ones",
+              "raise the face limit or simplify the mesh");
+    faces_.push_back({std::move(ring), f});
+  }
+
+  void add_line(std::size_t l) {
+    const RawLine& line = raw_.lines[l];
+    const std::uint32_t a = canon_[line.a], b = canon_[line.b];
+    if (a == b) {
+      warnings_.add("degenerate-line",
+                    at(line.where, "line segment from vertex " + vertex_name(a) + " to itself; dropped it"));
+      return;
+    }
+    lines_.push_back({a, b, l});
+  }
+
+  // Builder face numbers ("face 3", "faces 3 and 5", "faces (3, 5, 9)") → the file's face numbers.
+  std::string rename_faces(const std::string& message) const {
+    const std::string noun = raw_.face_noun;
+    std::string out;
+    std::size_t i = 0;
+    auto digit = [&](std::size_t k) { return k < message.size() && message[k] >= '0' && message[k] <= '9'; };
+    auto number = [&]() {  // maps the number at i, advancing past it
+      std::size_t k = i, n = 0;
+      while (digit(k) && k - i < 18) n = n * 10 + static_cast<std::size_t>(message[k++] - '0');
+      out += n >= 1 && n <= faces_.size() ? std::to_string(faces_[n - 1].raw + 1) : message.substr(i, k - i);
+      i = k;
+    };
+    while (i < message.size()) {
+      const bool word_start = i == 0 || !std::isalpha(static_cast<unsigned char>(message[i - 1]));
+      if (word_start && message.compare(i, 6, "faces ") == 0 &&
+          (digit(i + 6) || message.compare(i + 6, 1, "(") == 0)) {
+        out += noun + "s ";
+        i += 6;
+        if (message[i] == '(') {
+          out += '(';
+          ++i;
+          while (digit(i)) {
+            number();
+            if (message.compare(i, 2, ", ") == 0) out += ", ", i += 2;
+          }
+        } else {
+          number();
+          if (message.compare(i, 5, " and ") == 0 && digit(i + 5)) {
+            out += " and ";
+            i += 5;
+            number();
+          }
+        }
+      } else if (word_start && message.compare(i, 5, "face ") == 0 && digit(i + 5)) {
+        out += noun + " ";
+        i += 5;
+        number();
+      } else {
+        out += message[i++];
+      }
+    }
+    return out;
+  }
+
+  MeshProblem locate(const SolidDiagnostic& d) const {
+    const auto kind = static_cast<TagKind>(d.tag >> 40);
+    const auto index = static_cast<std::size_t>(d.tag & ((std::int64_t{1} << 40) - 1));
+    std::string message = rename_faces(d.message);
+    Source where{static_cast<int>(raw_.files.size()) - 1, 0, 0, -1};
+    if (d.tag >= 0 && kind == TagKind::Vertex && index < raw_.vertices.size()) {
+      where = raw_.vertices[index].where;
+    } else if (d.tag >= 0 && kind == TagKind::Face && index < faces_.size()) {
+      const std::size_t f = faces_[index].raw;
+      where = raw_.faces[f].where;
+      if (where.offset >= 0)
+        message += " (" + std::string(raw_.face_noun) + " " + std::to_string(f + 1) +
+                   " starts at byte offset " + std::to_string(where.offset) + ")";
+    } else if (d.tag >= 0 && kind == TagKind::Line && index < lines_.size()) {
+      where = raw_.lines[lines_[index].raw].where;
+    }
+    return at(where, std::move(message));
+  }
+
+  static std::string hint_for(const std::string& code) {
+    if (code == "non-manifold-edge")
+      return "remove duplicate or extra faces, or split the mesh into separate files";
+    if (code == "non-orientable")
+      return "a one-sided surface cannot be drawn as a solid; rebuild the faces there";
+    if (code == "duplicate-vertex")
+      return "two vertices nearly coincide (only exact duplicates are merged on import); merge them in the "
+             "file";
+    return "repair the mesh in a modelling tool and export it again";
+  }
+
+  ImportedMesh build() {
+    SolidBuildOptions build_options;
+    build_options.crease_angle_deg = options_.crease_angle_deg;
+    build_options.fix_winding = true;
+    SolidBuilder builder(build_options);
+
+    // Only vertices some face or line uses; ids are the file's vertex numbers.
+    std::vector<bool> used(raw_.vertices.size(), false);
+    for (const BuiltFace& f : faces_)
+      for (std::uint32_t v : f.ring) used[v] = true;
+    for (const BuiltLine& l : lines_) used[l.a] = used[l.b] = true;
+    std::size_t unused = 0, first_unused = 0;
+    std::vector<std::string> names(raw_.vertices.size());  // made once, not per reference
+    for (std::size_t v = 0; v < raw_.vertices.size(); ++v) {
+      if (canon_[v] != v) continue;
+      if (used[v]) {
+        names[v] = vertex_name(static_cast<std::uint32_t>(v));
+        builder.add_vertex(names[v], raw_.vertices[v].position, make_tag(TagKind::Vertex, v));
+      } else if (unused++ == 0) {
+        first_unused = v;
+      }
+    }
+    if (unused > 0)
+      warnings_.add(
+          "unused-vertex",
+          at(raw_.vertices[first_unused].where,
+             "vertex " + vertex_name(static_cast<std::uint32_t>(first_unused)) +
+                 (unused > 1 ? " and " + std::to_string(unused - 1) + " other vertices are" : " is") +
+                 " used by no face or line; left out"));
+    auto ids = [&](const std::vector<std::uint32_t>& ring) {
+      std::vector<std::string> out;
+      out.reserve(ring.size());
+      for (std::uint32_t v : ring) out.push_back(names[v]);
+      return out;
+    };
+    for (std::size_t i = 0; i < faces_.size(); ++i)
+      builder.add_face(ids(faces_[i].ring), {}, make_tag(TagKind::Face, i));
+    for (std::size_t i = 0; i < lines_.size(); ++i)
+      builder.add_line(names[lines_[i].a], names[lines_[i].b], make_tag(TagKind::Line, i));
+
+    SolidBuildResult result = builder.build();
+    std::size_t errors = 0, inside_out = 0;
+    const SolidDiagnostic* first_error = nullptr;
+    std::optional<MeshProblem> first_inside_out;
+    for (const SolidDiagnostic& d : result.diagnostics) {
+      if (d.severity == SolidDiagnostic::Severity::Error) {
+        if (errors++ == 0) first_error = &d;
+        continue;
+      }
+      // A mesh exported inside out gets one warning, not one per face.
+      if (d.code == "reoriented" && d.message.find("inside out") != std::string::npos) {
+        if (inside_out++ == 0) first_inside_out = locate(d);
+        continue;
+      }
+      warnings_.add(d.code, locate(d));
+    }
+    if (inside_out == 1) warnings_.add("reoriented", std::move(*first_inside_out));
+    if (inside_out > 1) {
+      MeshProblem p = std::move(*first_inside_out);
+      p.message = std::to_string(inside_out) + " " + raw_.face_noun +
+                  "s were wound clockwise seen from outside, every face of their solid (it was inside out); "
+                  "reversed them";
+      warnings_.add("reoriented", std::move(p));
+    }
+    if (first_error || !result.ok()) {
+      if (!first_error) fail(raw_.files.back(), 0, 0, "the mesh is not a valid solid");
+      MeshProblem p = locate(*first_error);
+      if (errors > 1) p.message += " (and " + std::to_string(errors - 1) + " more problems)";
+      p.hint = hint_for(first_error->code);
+      throw MeshImportError(std::move(p));
+    }
+    return ImportedMesh{std::move(*result.solid), warnings_.finish()};
+  }
+
+  RawMesh& raw_;
+  const MeshImportOptions& options_;
+  Warnings warnings_;
+  std::vector<std::uint32_t> canon_;
+  std::vector<Point3> positions_;
+  std::vector<BuiltFace> faces_;
+  std::vector<BuiltLine> lines_;
+  struct FaceKey {
+    std::uint64_t a, b;
+    bool operator==(const FaceKey&) const = default;
+  };
+  struct FaceKeyHash {
+    std::size_t operator()(const FaceKey& k) const { return static_cast<std::size_t>(k.a ^ (k.b << 1)); }
+  };
+  std::unordered_map<FaceKey, std::size_t, FaceKeyHash> seen_;  // cycle of a kept face → its file face
+  std::int64_t budget_ = kTriangulationBudget;
+};
+
+}  // namespace
+
+ImportedMesh build_mesh(RawMesh raw, const MeshImportOptions& options) { return Builder(raw, options).run(); }
+
+}  // namespace hlr::stdlib::mesh_detail

@@ -1,0 +1,126 @@
+// Internals of mesh import shared by the per-format parsers (mesh_off/obj/stl/albers.cpp), the text
+// scanner (mesh_text.cpp), triangulation (mesh_triangulate.cpp) and the common assembly into a Solid
+// (mesh_build.cpp). Not part of the stdlib API.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "core/geometry/vector.hpp"
+#include "stdlib/mesh_import.hpp"
+
+namespace hlr::stdlib::mesh_detail {
+
+// ---- raw mesh: what a parser read, before any repair -------------------------------------------------
+
+// Where a record came from: a line and column of a text file, or a byte offset of a binary one.
+struct Source {
+  int file = 0;  // index into RawMesh::files
+  int line = 0;
+  int column = 0;
+  std::int64_t offset = -1;  // binary data: byte offset of the record
+};
+
+struct RawVertex {
+  Point3 position;
+  Source where;
+};
+
+struct RawFace {
+  std::vector<std::uint32_t> vertices;  // indices into RawMesh::vertices, checked by the parser
+  Source where;
+};
+
+struct RawLine {
+  std::uint32_t a = 0, b = 0;
+  Source where;
+};
+
+struct RawMesh {
+  std::vector<std::string> files;  // names used in problems
+  const char* face_noun = "face";  // "face", "facet", "triangle", "surface"
+  int vertex_base = 0;             // the number of the first vertex in messages (OFF 0, others 1)
+  bool welded_by_format = false;   // STL: exact welding is how its vertices are found, not a repair
+  std::vector<RawVertex> vertices;
+  std::vector<RawFace> faces;  // face k is "<noun> k+1" in messages
+  std::vector<RawLine> lines;
+  std::vector<MeshProblem> warnings;  // found while parsing
+};
+
+// Repairs the raw mesh (welding, repeated vertices, degenerate faces, non-planar polygons), builds the
+// Solid through SolidBuilder and turns its diagnostics into warnings or a MeshImportError.
+ImportedMesh build_mesh(RawMesh raw, const MeshImportOptions& options);
+
+// ---- problems ------------------------------------------------------------------------------------------
+
+[[noreturn]] void fail(const std::string& file, int line, int column, std::string message,
+                       std::string hint = {});
+
+// A token for messages: quoted, non-printable bytes escaped, long tokens shortened.
+std::string quoted(std::string_view token);
+
+// ---- text scanning ---------------------------------------------------------------------------------------
+
+struct Token {
+  std::string_view text;
+  int column = 0;  // 1-based
+};
+
+// Splits text into lines ending in "\n", "\r\n" or "\r" (a UTF-8 byte-order mark is skipped).
+class LineScanner {
+ public:
+  explicit LineScanner(std::string_view text);
+  bool next();  // advances to the next line; false at the end of the text
+  int line() const { return line_; }
+  std::string_view text() const { return current_; }
+  // Whitespace-separated tokens of the current line, stopping at `comment` (0 = no comments).
+  const std::vector<Token>& tokens(char comment = 0);
+
+ private:
+  std::string_view rest_, current_;
+  int line_ = 0;
+  std::vector<Token> tokens_;
+};
+
+// Parsing of numbers in one line of one file, reporting problems at the token.
+class LineContext {
+ public:
+  LineContext(const std::string& file, int line) : file_(file), line_(line) {}
+  // A finite real (decimal, optional sign and exponent; "nan"/"inf" and overflow are errors, underflow
+  // is zero). `what` names the value in messages, e.g. "the y coordinate".
+  double real(const Token& t, const char* what) const;
+  // A real that may be non-finite (facet normals, which are ignored anyway).
+  double any_real(const Token& t, const char* what) const;
+  // An integer in [lo, hi] (decimal, optional sign, leading zeros allowed).
+  std::int64_t integer(const Token& t, const char* what, std::int64_t lo, std::int64_t hi) const;
+  [[noreturn]] void fail(int column, std::string message, std::string hint = {}) const;
+  const std::string& file() const { return file_; }
+  int line() const { return line_; }
+
+ private:
+  const std::string& file_;
+  int line_;
+};
+
+// Whole-token parses without reporting (false when the token is not of that form).
+bool parse_real(std::string_view text, double& out);  // out may be non-finite for "nan"/"inf"
+bool parse_integer(std::string_view text, std::int64_t& out);
+bool iequals(std::string_view a, std::string_view b);  // ASCII case-insensitive
+
+// ---- triangulation
+// -----------------------------------------------------------------------------------------
+
+using Triangle = std::array<std::uint32_t, 3>;
+
+// Triangulates a simple polygon (ring of indices into `points`, no repeated vertex) seen along `normal`,
+// keeping its winding: a fan when its projection is convex, else ear clipping (an ear at a time, the
+// first convex vertex whose triangle holds no other vertex; if none exists because the projection
+// self-overlaps, the most convex vertex). `budget` bounds the total work across calls; returns false
+// (and no triangles) once it is exhausted.
+bool triangulate(const std::vector<Point3>& points, const std::vector<std::uint32_t>& ring, Vector3 normal,
+                 std::vector<Triangle>& out, std::int64_t& budget);
+
+}  // namespace hlr::stdlib::mesh_detail

@@ -1,0 +1,115 @@
+// import_mesh: reads the file (reporting the system's reason when it cannot), picks the parser by the
+// extension and, for Albers' pairs, finds the partner file beside it.
+#include "stdlib/mesh_import.hpp"
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <memory>
+#include <optional>
+
+#include "stdlib/mesh_detail.hpp"
+
+namespace hlr::stdlib {
+
+namespace fs = std::filesystem;
+using mesh_detail::fail;
+
+std::string MeshProblem::to_string() const {
+  std::string s = file;
+  if (line > 0) {
+    s += ":" + std::to_string(line);
+    if (column > 0) s += ":" + std::to_string(column);
+  }
+  s += ": " + message;
+  if (!hint.empty()) s += "; hint: " + hint;
+  return s;
+}
+
+MeshImportError::MeshImportError(MeshProblem p) : std::runtime_error(p.to_string()), problem(std::move(p)) {}
+
+namespace {
+
+std::string lower(std::string s) {
+  for (char& c : s)
+    if (c >= 'A' && c <= 'Z') c = static_cast<char>(c - 'A' + 'a');
+  return s;
+}
+
+std::string read_file(const fs::path& path, const std::string& name) {
+  std::error_code ec;
+  const fs::file_status st = fs::status(path, ec);
+  if (fs::exists(st) && !fs::is_regular_file(st))
+    fail(name, 0, 0,
+         fs::is_directory(st) ? "cannot read the file: it is a directory"
+                              : "cannot read the file: not a regular file",
+         "name a mesh file");
+  errno = 0;
+  const std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(path.c_str(), "rb"), &std::fclose);
+  if (!file)
+    fail(name, 0, 0, std::string("cannot open the file: ") + std::strerror(errno),
+         "check the path and permissions");
+  std::string data;
+  char buffer[1 << 16];
+  for (;;) {
+    const std::size_t n = std::fread(buffer, 1, sizeof buffer, file.get());
+    data.append(buffer, n);
+    if (n < sizeof buffer) break;
+  }
+  if (std::ferror(file.get()))
+    fail(name, 0, 0, std::string("cannot read the file: ") + std::strerror(errno),
+         "check the file and the disk");
+  return data;
+}
+
+// The file beside `path` with the same stem and extension `want` (lower case, e.g. ".sur") in any case:
+// first the same stem exactly, then the stem in any case (DOS names copied to other systems).
+std::optional<fs::path> find_partner(const fs::path& path, const std::string& want) {
+  const fs::path dir = path.has_parent_path() ? path.parent_path() : fs::path(".");
+  const std::string stem = path.stem().string();
+  std::optional<fs::path> loose;
+  std::error_code ec;
+  for (fs::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
+    const fs::path candidate = it->path();
+    if (lower(candidate.extension().string()) != want) continue;
+    const std::string s = candidate.stem().string();
+    if (s == stem) return path.has_parent_path() ? candidate : candidate.filename();
+    if (!loose && lower(s) == lower(stem)) loose = path.has_parent_path() ? candidate : candidate.filename();
+  }
+  return loose;
+}
+
+}  // namespace
+
+ImportedMesh import_mesh(const fs::path& path, const MeshImportOptions& options) {
+  const std::string name = path.string();
+  const std::string ext = lower(path.extension().string());
+  if (ext == ".off") return import_off(read_file(path, name), name, options);
+  if (ext == ".obj") return import_obj(read_file(path, name), name, options);
+  if (ext == ".stl") return import_stl(read_file(path, name), name, options);
+  if (ext == ".ver" || ext == ".sur") {
+    const bool given_ver = ext == ".ver";
+    const std::string other = given_ver ? ".sur" : ".ver";
+    const std::string given_text = read_file(path, name);
+    const std::optional<fs::path> partner = find_partner(path, other);
+    if (!partner) {
+      std::string upper = other;
+      for (char& c : upper)
+        if (c >= 'a' && c <= 'z') c = static_cast<char>(c - 'a' + 'A');
+      fail(name, 0, 0,
+           std::string("missing ") + (given_ver ? "surface" : "vertex") + " file: no " +
+               path.stem().string() + upper + " beside " + path.filename().string(),
+           "Albers' objects are a pair of files with the same name: NAME.VER (vertices) and NAME.SUR "
+           "(surfaces)");
+    }
+    const std::string partner_name = partner->string();
+    const std::string partner_text = read_file(*partner, partner_name);
+    return given_ver ? import_albers(given_text, partner_text, name, partner_name, options)
+                     : import_albers(partner_text, given_text, partner_name, name, options);
+  }
+  fail(name, 0, 0,
+       ext.empty() ? "the file name has no extension" : "unknown mesh format " + mesh_detail::quoted(ext),
+       "import reads .off, .obj, .stl and Albers' .ver/.sur files");
+}
+
+}  // namespace hlr::stdlib

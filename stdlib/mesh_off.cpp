@@ -1,0 +1,168 @@
+// OFF (Geomview's Object File Format): header keyword with optional prefixes, counts, one vertex and
+// one face per line. Read line by line so that every problem has a line and column.
+#include <cstdint>
+#include <limits>
+
+#include "stdlib/mesh_detail.hpp"
+
+namespace hlr::stdlib {
+
+using namespace mesh_detail;
+
+namespace {
+
+constexpr const char* kHeaderHint = "an OFF file starts with 'OFF', then the vertex and face counts";
+
+struct OffReader {
+  const std::string& name;
+  LineScanner lines;
+
+  // The next line with data (comments and blank lines skipped), or null at the end of the file.
+  const std::vector<Token>* next() {
+    while (lines.next()) {
+      const std::vector<Token>& t = lines.tokens('#');
+      if (!t.empty()) return &t;
+    }
+    return nullptr;
+  }
+  LineContext context() const { return LineContext(name, lines.line()); }
+};
+
+// Checks the header keyword "[ST][C][N][n]OFF"; returns how many tokens of the line it used.
+std::size_t read_keyword(const std::vector<Token>& t, const LineContext& ctx) {
+  const std::string_view keyword = t[0].text;
+  std::string_view prefix = keyword.substr(0, keyword.size() - 3);
+  const bool has_dimension = prefix.ends_with('n');
+  if (prefix.starts_with("ST")) prefix.remove_prefix(2);
+  for (const char* flag : {"C", "N", "4", "n"})
+    if (prefix.starts_with(flag)) {
+      if (*flag == '4')
+        ctx.fail(t[0].column, "4-D OFF (" + quoted(keyword) + ") is not supported", kHeaderHint);
+      prefix.remove_prefix(1);
+    }
+  if (!prefix.empty()) ctx.fail(t[0].column, "unknown OFF header " + quoted(keyword), kHeaderHint);
+  std::size_t used = 1;
+  if (has_dimension) {
+    if (t.size() < 2)
+      ctx.fail(t[0].column, "the header 'nOFF' needs the dimension after it", "write 'nOFF 3'");
+    if (ctx.integer(t[1], "the dimension", 0, std::numeric_limits<std::int64_t>::max()) != 3)
+      ctx.fail(t[1].column, "only 3-dimensional OFF files are supported", "write 'nOFF 3' or plain 'OFF'");
+    used = 2;
+  }
+  if (t.size() > used && iequals(t[used].text, "BINARY"))
+    ctx.fail(t[used].column, "binary OFF is not supported", "save the mesh as text OFF");
+  return used;
+}
+
+}  // namespace
+
+ImportedMesh import_off(std::string_view text, const std::string& name, const MeshImportOptions& options) {
+  RawMesh raw;
+  raw.files = {name};
+  raw.vertex_base = 0;
+  if (text.empty()) fail(name, 0, 0, "the file is empty", kHeaderHint);
+  OffReader in{name, LineScanner(text)};
+
+  const std::vector<Token>* t = in.next();
+  if (!t) fail(name, 0, 0, "the file holds only comments and blank lines", kHeaderHint);
+  std::size_t first = 0;  // first count token on this line
+  double probe = 0;
+  if ((*t)[0].text.size() >= 3 && (*t)[0].text.ends_with("OFF")) {
+    first = read_keyword(*t, in.context());
+  } else if (!parse_real((*t)[0].text, probe)) {
+    in.context().fail((*t)[0].column,
+                      "not an OFF file: expected 'OFF' or the counts, found " + quoted((*t)[0].text),
+                      kHeaderHint);
+  }
+  if (first == t->size()) {
+    const int header_line = in.lines.line();
+    t = in.next();
+    if (!t)
+      fail(name, header_line, 0, "the file ends after the header", "give the counts: vertices faces edges");
+    first = 0;
+  }
+
+  // Counts: vertices faces [edges].
+  const LineContext counts = in.context();
+  const std::size_t n_counts = t->size() - first;
+  if (n_counts < 2 || n_counts > 3)
+    counts.fail(
+        (*t)[first].column,
+        "the counts line holds " + std::to_string(n_counts) + " values; expected 'vertices faces [edges]'",
+        kHeaderHint);
+  constexpr std::int64_t kMax = std::numeric_limits<std::int64_t>::max();
+  const std::int64_t n_vertices = counts.integer((*t)[first], "the vertex count", 0, 0xFFFFFFFEll);
+  const Token face_count = (*t)[first + 1];
+  const std::int64_t n_faces = counts.integer(face_count, "the face count", 0, kMax);
+  if (n_counts == 3) counts.integer((*t)[first + 2], "the edge count", 0, kMax);
+  if (static_cast<std::uint64_t>(n_faces) > options.max_faces)
+    counts.fail(face_count.column,
+                "the header announces " + std::to_string(n_faces) + " faces, more than the limit of " +
+                    std::to_string(options.max_faces),
+                "raise the face limit or simplify the mesh");
+  const std::string range =
+      n_vertices == 0 ? "the file has no vertices" : "0.." + std::to_string(n_vertices - 1);
+
+  // No reserve from the counts: the vectors grow only with data actually present.
+  for (std::int64_t k = 0; k < n_vertices; ++k) {
+    t = in.next();
+    if (!t)
+      fail(name, in.lines.line(), 0,
+           "the file ends after " + std::to_string(k) + " of the " + std::to_string(n_vertices) +
+               " vertices announced",
+           "the file is truncated, or the header's vertex count is too large");
+    const LineContext ctx = in.context();
+    if (t->size() < 3)
+      ctx.fail((*t)[0].column,
+               "vertex " + std::to_string(k) + " has " + std::to_string(t->size()) + " value" +
+                   (t->size() == 1 ? "" : "s") + "; expected x y z",
+               "write the three coordinates of each vertex on one line");
+    const Point3 p{ctx.real((*t)[0], "the x coordinate"), ctx.real((*t)[1], "the y coordinate"),
+                   ctx.real((*t)[2], "the z coordinate")};
+    raw.vertices.push_back({p, {0, ctx.line(), (*t)[0].column, -1}});  // extras (normal, colour) ignored
+  }
+
+  for (std::int64_t k = 0; k < n_faces; ++k) {
+    t = in.next();
+    if (!t)
+      fail(name, in.lines.line(), 0,
+           "the file ends after " + std::to_string(k) + " of the " + std::to_string(n_faces) +
+               " faces announced",
+           "the file is truncated, or the header's face count is too large");
+    const LineContext ctx = in.context();
+    const std::string face = "face " + std::to_string(k + 1);
+    const std::int64_t n = ctx.integer((*t)[0], "the face's vertex count", 0, kMax);
+    const auto listed = static_cast<std::int64_t>(t->size()) - 1;
+    if (n > listed)
+      ctx.fail((*t)[0].column,
+               face + " announces " + std::to_string(n) + " vertices but lists " + std::to_string(listed),
+               "each face line is: count, then that many vertex indices");
+    if (listed - n > 4)
+      ctx.fail((*t)[static_cast<std::size_t>(n) + 1].column,
+               face + " has " + std::to_string(listed - n) + " values after its " + std::to_string(n) +
+                   " vertex indices; at most a colour (4 values) may follow",
+               "check the vertex count at the start of the line");
+    RawFace f;
+    f.where = {0, ctx.line(), (*t)[0].column, -1};
+    for (std::int64_t i = 1; i <= n; ++i) {
+      const Token& tok = (*t)[static_cast<std::size_t>(i)];
+      const std::int64_t v =
+          ctx.integer(tok, "a vertex index", std::numeric_limits<std::int64_t>::min(), kMax);
+      if (v < 0 || v >= n_vertices)
+        ctx.fail(tok.column, "vertex index " + std::to_string(v) + " is out of range (" + range + ")",
+                 "OFF vertex indices count from 0");
+      f.vertices.push_back(static_cast<std::uint32_t>(v));
+    }
+    for (std::size_t i = static_cast<std::size_t>(n) + 1; i < t->size(); ++i)
+      ctx.any_real((*t)[i], "the face colour");
+    raw.faces.push_back(std::move(f));
+  }
+
+  if ((t = in.next()))
+    in.context().fail((*t)[0].column,
+                      "unexpected data after the " + std::to_string(n_faces) + " faces the header announced",
+                      "the header's face count may be too small");
+  return build_mesh(std::move(raw), options);
+}
+
+}  // namespace hlr::stdlib
