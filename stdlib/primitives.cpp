@@ -100,20 +100,15 @@ Solid solid_from_indexed(const std::vector<Point3>& vertices, const std::vector<
   options.crease_angle_deg = crease_angle_deg;
   options.fix_winding = false;  // a generator with inconsistent winding is a bug: let it fail loudly
   SolidBuilder builder(options);
-  for (std::size_t i = 0; i < vertices.size(); ++i)
-    builder.add_vertex(std::to_string(i), vertices[i], static_cast<std::int64_t>(i));
-  auto ids = [](const std::vector<std::uint32_t>& ring) {
-    std::vector<std::string> s;
-    s.reserve(ring.size());
-    for (std::uint32_t v : ring) s.push_back(std::to_string(v));
-    return s;
-  };
-  for (std::size_t f = 0; f < faces.size(); ++f) {
-    std::vector<std::vector<std::string>> holes;
-    for (std::size_t r = 1; r < faces[f].size(); ++r) holes.push_back(ids(faces[f][r]));
-    builder.add_face(ids(faces[f][0]), holes, static_cast<std::int64_t>(f));
-  }
-  for (const IndexedLine& l : lines) builder.add_line(std::to_string(l.a), std::to_string(l.b));
+  // Indexed input: vertex i has id "i" without a string per vertex or reference. No tags: the error
+  // below reports diagnostics by message, and untagged input stores none.
+  std::size_t references = 0;
+  for (const IndexedFace& f : faces)
+    for (const auto& ring : f) references += ring.size();
+  builder.reserve(vertices.size(), faces.size(), references);
+  for (const Point3& p : vertices) builder.add_vertex(p);
+  for (const IndexedFace& f : faces) builder.add_indexed_face(f);
+  for (const IndexedLine& l : lines) builder.add_indexed_line(l.a, l.b);
   SolidBuildResult result = builder.build();
   if (!result.ok()) {
     std::ostringstream msg;

@@ -1,11 +1,13 @@
-// Internals of SolidBuilder::build(), shared by its translation units (solid_builder.cpp: vertices and
-// assembly; face_loops.cpp: rings and planes of one face; winding.cpp: consistent outward orientation;
-// edge_table.cpp: edges, markings and free lines). Not part of the public API.
+// Internals of SolidBuilder::build(), shared by its translation units (solid_builder.cpp: input and
+// assembly; vertex_table.cpp: ids and vertices; face_loops.cpp: rings and planes of one face; winding.cpp:
+// consistent outward orientation; edge_table.cpp: edges, markings and free lines). Not part of the public
+// API. Faces are streamed: each is prepared in reused buffers and its edges entered at once, so only the
+// solid under construction and the edge table grow with the input.
 #pragma once
 
 #include <cstdint>
+#include <span>
 #include <string>
-#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -37,33 +39,81 @@ class Diagnostics {
 // Shortest decimal text of a number for messages: "0.25", "1e-06", "nan".
 std::string format_number(double value);
 
-// The declared vertices, resolved: index = insertion order (duplicate ids keep their first declaration).
+inline constexpr VertexIndex kNoVertex = 0xffffffffu;
+
+// Tags by input position; an empty list means all are -1 (SolidBuilder stores none until one is given).
+struct Tags {
+  const std::vector<std::int64_t>& list;
+  std::int64_t operator[](std::size_t i) const { return list.empty() ? -1 : list[i]; }
+};
+
+// The declared vertices, resolved: index = declaration order, leaving out a vertex whose id was declared
+// before (references to that id keep the first declaration).
 struct VertexTable {
-  std::vector<Point3> positions;
-  std::vector<std::string> ids;
-  std::vector<bool> usable;  // false for non-finite positions (already reported)
-  std::unordered_map<std::string, VertexIndex> index_of;
-  Tolerance tolerance;  // scaled to the largest coordinate of the scene
+  // The builder's positions, or `kept` when some were left out; not copied, so that the solid's copy
+  // can wait until the edge table is done.
+  const std::vector<Point3>& positions() const { return input_of.empty() ? *input_positions : kept; }
+  const std::vector<Point3>* input_positions = nullptr;
+  std::vector<Point3> kept;
+  std::vector<bool> usable;     // false for non-finite positions (already reported)
+  Tolerance tolerance;          // scaled to the largest coordinate of the scene
+  std::size_t input_count = 0;  // vertices declared
+  // Both empty when no id was declared twice, i.e. index = input number.
+  std::vector<VertexIndex> input_of;  // index → input number
+  std::vector<VertexIndex> table_of;  // input number → index (of the first declaration of its id)
+  std::vector<VertexIndex> by_id;     // interned id → index, kNoVertex if no vertex has it
+  const std::vector<std::uint32_t>* input_ids = nullptr;  // SolidBuilder::vertex_ids_
+  const IdTable* ids = nullptr;
+
+  VertexIndex resolve(VertexRef ref) const;   // kNoVertex if no vertex has that id
+  std::string ref_text(VertexRef ref) const;  // the id a reference names
+  std::string id(VertexIndex v) const;
 };
 
-// One input face after resolution and checks. `number` is its 1-based position in input order, the
-// name used in messages ("face 3").
-struct PreparedFace {
-  int number = 0;
-  std::int64_t tag = -1;
-  bool valid = false;
-  std::vector<Ring> rings;                                      // outer first; holes opposite to it
-  std::vector<std::pair<VertexIndex, VertexIndex>> lines;       // on-face lines (edges traversed both ways)
-  std::vector<std::vector<VertexIndex>> traversal;              // cleaned input loops: fixes edge order
+// Vertex stage (vertex_table.cpp): non-finite coordinates, duplicate ids and two ids at one position are
+// errors. `input_ids` and `ids` as in SolidBuilder.
+VertexTable resolve_vertices(const std::vector<Point3>& positions, Tags tags,
+                             const std::vector<std::uint32_t>& input_ids, const IdTable& ids,
+                             Diagnostics& diagnostics);
+
+// Closed loops of vertex indices stored back to back.
+struct Loops {
+  std::vector<VertexIndex> vertices;
+  std::vector<std::uint32_t> ends;  // end of each loop in `vertices`
+
+  std::size_t size() const { return ends.size(); }
+  std::span<const VertexIndex> operator[](std::size_t k) const {
+    const std::size_t begin = k == 0 ? 0 : ends[k - 1];
+    return {vertices.data() + begin, ends[k] - begin};
+  }
+  void clear() {
+    vertices.clear();
+    ends.clear();
+  }
+  void close() { ends.push_back(static_cast<std::uint32_t>(vertices.size())); }  // ends the current loop
+};
+
+// One face in preparation; the buffers are reused from face to face. build() puts the resolved input
+// rings (or the single loop of add_face_loop) into `loops`; prepare_face cleans them — they then fix the
+// order in which the face's edges are first entered — and, if the face is valid, leaves its rings (outer
+// first; holes opposite to it), on-face lines, plane and size (bounding-box diagonal of its vertices, the
+// scale of its tolerances).
+struct FaceWork {
+  Loops loops;
+  std::vector<Ring> rings;
+  std::vector<std::pair<VertexIndex, VertexIndex>> lines;  // edges traversed both ways, lower index first
+  bool rings_are_loops = false;                            // rings[k] == loops[k] for every k
   Plane plane;
-  double size = 0;  // bounding-box diagonal of the face's vertices, the scale of its tolerances
+  double size = 0;
+  Loops scratch_loops;  // prepare_face's own buffers
+  std::vector<VertexIndex> scratch;
+  std::vector<double> areas;
 };
 
-// Resolves, cleans, splits and checks one face (face_loops.cpp). `input_rings` are the outer ring and
-// holes (add_face) or the single loop (add_face_loop); `from_loop` only changes wording.
-PreparedFace prepare_face(const std::vector<std::vector<std::string>>& input_rings, bool from_loop, int number,
-                          std::int64_t tag, const VertexTable& vertices, const SolidBuildOptions& options,
-                          Diagnostics& diagnostics);
+// Cleans, splits and checks one face (face_loops.cpp). `number` is its 1-based position in input order,
+// the name used in messages ("face 3"); `from_loop` only changes wording. Returns whether it is valid.
+bool prepare_face(FaceWork& work, bool from_loop, int number, std::int64_t tag, const VertexTable& vertices,
+                  const SolidBuildOptions& options, Diagnostics& diagnostics);
 
 // A face's traversal of an undirected edge: `forward` when it runs lo→hi.
 struct EdgeUse {
@@ -71,47 +121,78 @@ struct EdgeUse {
   bool forward;
 };
 
-// All undirected edges named by faces and lines, in first-seen order (Desens' LINES order).
+// All undirected edges named by faces and lines, in first-seen order (Desens' LINES order). The usual
+// two ring traversals are stored inline; further ones (a non-manifold edge) in EdgeEntries::extra().
 struct EdgeEntry {
-  VertexIndex lo = 0, hi = 0;      // lo < hi
-  std::vector<EdgeUse> uses;       // ring traversals
+  VertexIndex lo = 0, hi = 0;  // lo < hi
+  FaceIndex face[2] = {kNoFace, kNoFace};
   FaceIndex marking_face = kNoFace;  // first face naming it as an on-face line
-  bool free_line = false;          // from add_line, on no face
+  std::uint8_t forward = 0;          // bit k: traversal k runs lo→hi
+  std::uint8_t uses = 0;             // ring traversals: 0, 1, 2, or 3 for more than two
+  bool free_line = false;            // from add_line, on no face
+  EdgeUse use(int k) const { return {face[k], ((forward >> k) & 1) != 0}; }
 };
 
 class EdgeEntries {
  public:
-  EdgeEntry& get(VertexIndex a, VertexIndex b);  // creates the entry if new
-  const EdgeEntry* find(VertexIndex a, VertexIndex b) const;
-  std::vector<EdgeEntry>& list() { return list_; }
-  const std::vector<EdgeEntry>& list() const { return list_; }
+  struct Extra {
+    std::uint32_t entry;
+    EdgeUse use;
+  };
+  explicit EdgeEntries(std::size_t expected_entries);
+  std::uint32_t get(VertexIndex a, VertexIndex b);         // its number; creates the entry if new
+  std::uint32_t find(VertexIndex a, VertexIndex b) const;  // kNoEdge if absent
+  void add_use(std::uint32_t e, EdgeUse use);
+  EdgeEntry& operator[](std::uint32_t e) { return blocks_[e >> kShift][e & kMask]; }
+  const EdgeEntry& operator[](std::uint32_t e) const { return blocks_[e >> kShift][e & kMask]; }
+  std::uint32_t size() const { return size_; }
+  std::vector<Extra>& extra() { return extra_; }  // traversals beyond the second, in order
+  const std::vector<Extra>& extra() const { return extra_; }
+  void release_index();  // frees the lookup table once no more get()/find() will come
+  // Frees the block holding entry e once e is its last entry: a last pass in order frees as it goes.
+  void release_after(std::uint32_t e) {
+    if ((e & kMask) == kMask) blocks_[e >> kShift] = std::vector<EdgeEntry>();
+  }
 
  private:
-  static std::uint64_t key(VertexIndex a, VertexIndex b);
-  std::vector<EdgeEntry> list_;
-  std::unordered_map<std::uint64_t, std::size_t> index_;
+  // Blocks of 2^kShift entries (the first one grows like a vector from the expected size): no copies of
+  // the whole table as it grows. Large blocks are mapped by malloc on their own (over its largest mmap
+  // threshold, 32 MiB), so freeing them returns the memory instead of leaving holes among the solid's
+  // small allocations.
+  static constexpr int kShift = 21;
+  static constexpr std::uint32_t kMask = (1u << kShift) - 1;
+  std::size_t slot_of(VertexIndex lo, VertexIndex hi) const;  // its slot, or the empty one it would take
+  void grow_index();
+  std::vector<std::vector<EdgeEntry>> blocks_;
+  std::size_t expected_;
+  std::uint32_t size_ = 0;
+  // Open addressing: entry + 1, 0 = empty; a power of two, at most half full.
+  std::vector<std::uint32_t> slots_;
+  std::vector<Extra> extra_;
 };
 
-// Enters every ring edge and on-face line of the valid faces (edge_table.cpp) and reports edges used
-// by more than two faces.
-EdgeEntries collect_edges(const std::vector<PreparedFace>& faces, const VertexTable& vertices,
-                          Diagnostics& diagnostics);
+// Enters the edges of a valid face (edge_table.cpp): first-seen order from its cleaned loops, then its
+// ring traversals (filling each ring's `edges` with entry numbers) and on-face lines.
+void enter_face_edges(EdgeEntries& edges, FaceIndex face, FaceWork& work);
+
+// Reports edges used by more than two faces.
+void report_non_manifold(const EdgeEntries& edges, Tags face_tags, const VertexTable& vertices,
+                         Diagnostics& diagnostics);
 
 // Makes windings consistent per connected component and closed components outward (winding.cpp):
-// reverses the rings of the faces it flips, updates their planes and the uses in `edges`, and reports
-// each flip. Returns whether every component is closed.
-bool orient_faces(std::vector<PreparedFace>& faces, EdgeEntries& edges, const VertexTable& vertices,
+// reverses the rings of the faces it flips (with their `edges`), updates their planes and the uses in
+// `edges`, and reports each flip. Returns whether every component is closed.
+bool orient_faces(std::vector<Face>& faces, std::vector<Plane>& planes, const std::vector<bool>& valid,
+                  Tags face_tags, EdgeEntries& edges, const VertexTable& vertices,
                   const SolidBuildOptions& options, Diagnostics& diagnostics);
 
-// Fills the solid's edge table from `edges` (kinds, concavity), then adds the add_line lines as
-// markings or free lines (edge_table.cpp).
-struct LineSpec {
-  std::string a, b;
-  std::int64_t tag;
-};
-void build_edge_table(Solid& solid, EdgeEntries& edges, const std::vector<PreparedFace>& faces,
-                      const std::vector<LineSpec>& lines, const VertexTable& vertices,
-                      const SolidBuildOptions& options, Diagnostics& diagnostics);
+// Adds the add_line lines as markings or free lines, fills the solid's edge table from `edges` (kinds,
+// concavity) and turns the rings' entry numbers into indices of solid.edges (edge_table.cpp). The solid
+// has its faces and planes; `face_sizes` is needed only when there are lines. Frees `edges`.
+void build_edge_table(Solid& solid, EdgeEntries& edges, const std::vector<bool>& valid,
+                      const std::vector<double>& face_sizes, const std::vector<LineSpec>& lines,
+                      const VertexTable& vertices, const SolidBuildOptions& options,
+                      Diagnostics& diagnostics);
 
 // Name of an edge for messages: "3–4" (vertex ids, lower index first).
 std::string edge_name(const VertexTable& vertices, VertexIndex a, VertexIndex b);

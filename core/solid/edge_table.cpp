@@ -1,67 +1,123 @@
 // The edge table: every undirected ring edge once with the faces on its two sides, lines on faces, and
 // free lines, in first-seen order (for the theses' data this is exactly Desens' LINES numbering).
 #include <algorithm>
+#include <bit>
 #include <cmath>
+#include <stdexcept>
 
 #include "core/solid/builder_detail.hpp"
 
 namespace hlr::solid_detail {
 
-std::uint64_t EdgeEntries::key(VertexIndex a, VertexIndex b) {
-  const auto [lo, hi] = std::minmax(a, b);
-  return (std::uint64_t{lo} << 32) | hi;
-}
+EdgeEntries::EdgeEntries(std::size_t expected_entries)
+    : expected_(expected_entries),
+      slots_(std::bit_ceil(std::max<std::size_t>(16, 2 * expected_entries)), 0) {}
 
-EdgeEntry& EdgeEntries::get(VertexIndex a, VertexIndex b) {
-  const auto [it, fresh] = index_.try_emplace(key(a, b), list_.size());
-  if (fresh) {
-    EdgeEntry e;
-    e.lo = std::min(a, b);
-    e.hi = std::max(a, b);
-    list_.push_back(e);
+std::size_t EdgeEntries::slot_of(VertexIndex lo, VertexIndex hi) const {
+  const std::uint64_t key = (std::uint64_t{lo} << 32) | hi;
+  const std::size_t mask = slots_.size() - 1;
+  // Fibonacci hashing: the top bits of key × 2^64/φ.
+  for (std::size_t s = (key * 0x9E3779B97F4A7C15ull) >> (64 - std::countr_zero(slots_.size()));;
+       s = (s + 1) & mask) {
+    if (slots_[s] == 0) return s;
+    const EdgeEntry& e = (*this)[slots_[s] - 1];
+    if (e.lo == lo && e.hi == hi) return s;
   }
-  return list_[it->second];
 }
 
-const EdgeEntry* EdgeEntries::find(VertexIndex a, VertexIndex b) const {
-  const auto it = index_.find(key(a, b));
-  return it == index_.end() ? nullptr : &list_[it->second];
+void EdgeEntries::grow_index() {
+  slots_.assign(2 * slots_.size(), 0);
+  for (std::uint32_t e = 0; e < size_; ++e) slots_[slot_of((*this)[e].lo, (*this)[e].hi)] = e + 1;
 }
+
+std::uint32_t EdgeEntries::get(VertexIndex a, VertexIndex b) {
+  const VertexIndex lo = std::min(a, b), hi = std::max(a, b);
+  std::size_t s = slot_of(lo, hi);
+  if (slots_[s] != 0) return slots_[s] - 1;
+  if (size_ >= kNoEdge - 1) throw std::length_error("SolidBuilder: too many edges");
+  if (2 * (std::size_t{size_} + 1) > slots_.size()) {
+    grow_index();
+    s = slot_of(lo, hi);
+  }
+  if ((size_ & kMask) == 0) {
+    blocks_.emplace_back();
+    blocks_.back().reserve(size_ == 0 ? std::min<std::size_t>(expected_ + 1, kMask + 1) : kMask + 1);
+  }
+  EdgeEntry e;
+  e.lo = lo;
+  e.hi = hi;
+  blocks_.back().push_back(e);
+  slots_[s] = ++size_;
+  return size_ - 1;
+}
+
+std::uint32_t EdgeEntries::find(VertexIndex a, VertexIndex b) const {
+  const std::uint32_t e = slots_[slot_of(std::min(a, b), std::max(a, b))];
+  return e == 0 ? kNoEdge : e - 1;
+}
+
+void EdgeEntries::add_use(std::uint32_t e, EdgeUse use) {
+  EdgeEntry& entry = (*this)[e];
+  if (entry.uses >= 2) {
+    entry.uses = 3;
+    extra_.push_back({e, use});
+    return;
+  }
+  entry.face[entry.uses] = use.face;
+  if (use.forward) entry.forward |= static_cast<std::uint8_t>(1u << entry.uses);
+  ++entry.uses;
+}
+
+void EdgeEntries::release_index() { slots_ = std::vector<std::uint32_t>(); }
 
 std::string edge_name(const VertexTable& vertices, VertexIndex a, VertexIndex b) {
-  return vertices.ids[std::min(a, b)] + "\u2013" + vertices.ids[std::max(a, b)];
+  return vertices.id(std::min(a, b)) + "\u2013" + vertices.id(std::max(a, b));
 }
 
-EdgeEntries collect_edges(const std::vector<PreparedFace>& faces, const VertexTable& vertices,
-                          Diagnostics& diagnostics) {
-  EdgeEntries edges;
-  for (std::size_t fi = 0; fi < faces.size(); ++fi) {
-    const PreparedFace& face = faces[fi];
-    if (!face.valid) continue;
-    // Enter edges in the order the input traverses them, rings and on-face lines interleaved.
-    for (const std::vector<VertexIndex>& loop : face.traversal)
+void enter_face_edges(EdgeEntries& edges, FaceIndex face, FaceWork& work) {
+  // Edges are entered in the order the input traverses them, rings and on-face lines interleaved; when
+  // the rings are the input loops as given, one pass does both.
+  if (!work.rings_are_loops)
+    for (std::size_t k = 0; k < work.loops.size(); ++k) {
+      const std::span<const VertexIndex> loop = work.loops[k];
       for (std::size_t i = 0; i < loop.size(); ++i) edges.get(loop[i], loop[(i + 1) % loop.size()]);
-    for (const Ring& r : face.rings)
-      for (std::size_t i = 0; i < r.vertices.size(); ++i) {
-        const VertexIndex a = r.vertices[i], b = r.vertices[(i + 1) % r.vertices.size()];
-        edges.get(a, b).uses.push_back({static_cast<FaceIndex>(fi), a < b});
-      }
-    for (const auto& [a, b] : face.lines) {
-      EdgeEntry& e = edges.get(a, b);
-      if (e.marking_face == kNoFace) e.marking_face = static_cast<FaceIndex>(fi);
+    }
+  for (Ring& r : work.rings) {
+    const std::size_t n = r.vertices.size();
+    r.edges.assign(n, kNoEdge);
+    for (std::size_t i = 0; i < n; ++i) {
+      const VertexIndex a = r.vertices[i], b = r.vertices[(i + 1) % n];
+      const std::uint32_t e = edges.get(a, b);
+      edges.add_use(e, {face, a < b});
+      r.edges[i] = e;  // an entry number until build_edge_table
     }
   }
-  for (const EdgeEntry& e : edges.list()) {
-    if (e.uses.size() <= 2) continue;
-    std::string names;
-    for (const EdgeUse& u : e.uses)
-      names += (names.empty() ? "" : ", ") + std::to_string(faces[static_cast<std::size_t>(u.face)].number);
-    diagnostics.error("non-manifold-edge",
-                      "edge " + edge_name(vertices, e.lo, e.hi) + " is used by " + std::to_string(e.uses.size()) +
-                          " faces (" + names + "); an edge may border at most two faces",
-                      faces[static_cast<std::size_t>(e.uses[2].face)].tag);
+  for (const auto& [a, b] : work.lines) {
+    EdgeEntry& e = edges[edges.get(a, b)];
+    if (e.marking_face == kNoFace) e.marking_face = face;
   }
-  return edges;
+}
+
+void report_non_manifold(const EdgeEntries& edges, Tags face_tags, const VertexTable& vertices,
+                         Diagnostics& diagnostics) {
+  if (edges.extra().empty()) return;
+  std::vector<EdgeEntries::Extra> extra = edges.extra();  // grouped by entry, each group in order
+  std::stable_sort(extra.begin(), extra.end(),
+                   [](const auto& a, const auto& b) { return a.entry < b.entry; });
+  std::size_t next = 0;
+  for (std::uint32_t i = 0; i < edges.size(); ++i) {
+    const EdgeEntry& e = edges[i];
+    if (e.uses <= 2) continue;
+    std::string names = std::to_string(e.face[0] + 1) + ", " + std::to_string(e.face[1] + 1);
+    std::size_t count = 2;
+    const FaceIndex third = extra[next].use.face;
+    for (; next < extra.size() && extra[next].entry == i; ++next, ++count)
+      names += ", " + std::to_string(extra[next].use.face + 1);
+    diagnostics.error("non-manifold-edge",
+                      "edge " + edge_name(vertices, e.lo, e.hi) + " is used by " + std::to_string(count) +
+                          " faces (" + names + "); an edge may border at most two faces",
+                      face_tags[static_cast<std::size_t>(third)]);
+  }
 }
 
 namespace {
@@ -69,19 +125,21 @@ namespace {
 // The first face on which both end points lie: within the planarity tolerance of its plane and inside
 // or on its polygon. (Only the end points are tested: a line between two points of a non-convex face
 // may still leave it.)
-FaceIndex face_holding(Point3 a, Point3 b, const Solid& solid, const std::vector<PreparedFace>& faces,
+FaceIndex face_holding(Point3 a, Point3 b, const Solid& solid, const std::vector<Point3>& pos,
+                       const std::vector<bool>& valid, const std::vector<double>& face_sizes,
                        const SolidBuildOptions& options) {
-  for (std::size_t fi = 0; fi < faces.size(); ++fi) {
-    const PreparedFace& face = faces[fi];
-    if (!face.valid) continue;
-    const double tolerance = options.planarity_tolerance * face.size;
+  for (std::size_t fi = 0; fi < solid.faces.size(); ++fi) {
+    if (!valid[fi]) continue;
+    const std::vector<Ring>& rings = solid.faces[fi].rings;
+    const double tolerance = options.planarity_tolerance * face_sizes[fi];
     const Plane& plane = solid.planes[fi];
-    if (std::abs(plane.signed_distance(a)) > tolerance || std::abs(plane.signed_distance(b)) > tolerance) continue;
-    const FaceFrame frame = FaceFrame::from_normal(plane.normal, solid.vertices[face.rings[0].vertices[0]]);
+    if (std::abs(plane.signed_distance(a)) > tolerance || std::abs(plane.signed_distance(b)) > tolerance)
+      continue;
+    const FaceFrame frame = FaceFrame::from_normal(plane.normal, pos[rings[0].vertices[0]]);
     std::vector<Polygon2> flat;
-    for (const Ring& r : face.rings) {
+    for (const Ring& r : rings) {
       Polygon2 p;
-      for (VertexIndex v : r.vertices) p.push_back(frame.to_2d(solid.vertices[v]));
+      for (VertexIndex v : r.vertices) p.push_back(frame.to_2d(pos[v]));
       flat.push_back(std::move(p));
     }
     if (classify_point(frame.to_2d(a), flat, tolerance) != Containment::Outside &&
@@ -93,75 +151,97 @@ FaceIndex face_holding(Point3 a, Point3 b, const Solid& solid, const std::vector
 
 }  // namespace
 
-void build_edge_table(Solid& solid, EdgeEntries& edges, const std::vector<PreparedFace>& faces,
-                      const std::vector<LineSpec>& lines, const VertexTable& vertices,
-                      const SolidBuildOptions& options, Diagnostics& diagnostics) {
+void build_edge_table(Solid& solid, EdgeEntries& edges, const std::vector<bool>& valid,
+                      const std::vector<double>& face_sizes, const std::vector<LineSpec>& lines,
+                      const VertexTable& vertices, const SolidBuildOptions& options,
+                      Diagnostics& diagnostics) {
+  const std::vector<Point3>& pos = vertices.positions();
   for (std::size_t li = 0; li < lines.size(); ++li) {
     const LineSpec& line = lines[li];
     const std::string name = "line " + std::to_string(li + 1);
     VertexIndex ends[2] = {0, 0};
     bool resolved = true;
-    const std::string* ids[2] = {&line.a, &line.b};
+    const VertexRef refs[2] = {line.a, line.b};
     for (int k = 0; k < 2; ++k) {
-      const auto it = vertices.index_of.find(*ids[k]);
-      if (it == vertices.index_of.end()) {
-        if (k == 0 || line.b != line.a)
+      const VertexIndex v = vertices.resolve(refs[k]);
+      if (v == kNoVertex) {
+        const std::string id = vertices.ref_text(refs[k]);
+        if (k == 0 || id != vertices.ref_text(line.a))
           diagnostics.error("unknown-vertex",
-                            name + " names vertex '" + *ids[k] + "' which is not declared; declare it with 'vertex " +
-                                *ids[k] + " = (x, y, z)' before the line",
+                            name + " names vertex '" + id +
+                                "' which is not declared; declare it with 'vertex " + id +
+                                " = (x, y, z)' before the line",
                             line.tag);
         resolved = false;
         continue;
       }
-      if (!vertices.usable[it->second]) resolved = false;  // non-finite: reported with the vertex
-      ends[k] = it->second;
+      if (!vertices.usable[v]) resolved = false;  // non-finite: reported with the vertex
+      ends[k] = v;
     }
     if (!resolved) continue;
     if (ends[0] == ends[1]) {
-      diagnostics.warning("degenerate-line", name + " joins vertex '" + line.a + "' to itself; dropped it", line.tag);
+      diagnostics.warning("degenerate-line",
+                          name + " joins vertex '" + vertices.ref_text(line.a) + "' to itself; dropped it",
+                          line.tag);
       continue;
     }
-    if (edges.find(ends[0], ends[1])) continue;  // already an edge or a line: keep one
-    const FaceIndex on = face_holding(solid.vertices[ends[0]], solid.vertices[ends[1]], solid, faces, options);
-    EdgeEntry& e = edges.get(ends[0], ends[1]);
+    if (edges.find(ends[0], ends[1]) != kNoEdge) continue;  // already an edge or a line: keep one
+    const FaceIndex on = face_holding(pos[ends[0]], pos[ends[1]], solid, pos, valid, face_sizes, options);
+    EdgeEntry& e = edges[edges.get(ends[0], ends[1])];
     if (on != kNoFace)
       e.marking_face = on;
     else
       e.free_line = true;
   }
+  edges.release_index();
 
-  for (const EdgeEntry& entry : edges.list()) {
+  // Entries that become no edge: more than two faces (reported; no solid) or a path dropped by the loop
+  // split. Counted first so the table is allocated once, at its size.
+  auto kept = [](const EdgeEntry& e) {
+    return e.uses == 1 || e.uses == 2 || (e.uses == 0 && (e.marking_face != kNoFace || e.free_line));
+  };
+  std::size_t count = 0;
+  for (std::uint32_t i = 0; i < edges.size(); ++i) count += kept(edges[i]);
+  solid.edges.reserve(count);
+  std::vector<std::uint32_t> index_of;  // entry → solid edge, when some entries are dropped
+  if (count != edges.size()) index_of.assign(edges.size(), kNoEdge);
+
+  for (std::uint32_t i = 0; i < edges.size(); edges.release_after(i++)) {
+    const EdgeEntry& entry = edges[i];
+    if (!kept(entry)) continue;
     SolidEdge e;
     e.v0 = entry.lo;
     e.v1 = entry.hi;
-    if (entry.uses.size() == 2) {
+    if (entry.uses == 2) {
       // left runs v0→v1; after orientation the other use runs v1→v0.
-      const EdgeUse& l = entry.uses[0].forward ? entry.uses[0] : entry.uses[1];
-      const EdgeUse& r = &l == &entry.uses[0] ? entry.uses[1] : entry.uses[0];
-      e.left = l.face;
-      e.right = r.face;
-      const DihedralClass c = classify_dihedral(solid.vertices[e.v1] - solid.vertices[e.v0],
-                                                solid.planes[static_cast<std::size_t>(e.left)].normal,
-                                                solid.planes[static_cast<std::size_t>(e.right)].normal,
-                                                options.crease_angle_deg);
+      const int l = entry.use(0).forward ? 0 : 1;
+      e.left = entry.face[l];
+      e.right = entry.face[1 - l];
+      const DihedralClass c =
+          classify_dihedral(pos[e.v1] - pos[e.v0], solid.planes[static_cast<std::size_t>(e.left)].normal,
+                            solid.planes[static_cast<std::size_t>(e.right)].normal, options.crease_angle_deg);
       e.kind = c.kind;
       e.concave = c.concave;
-    } else if (entry.uses.size() == 1) {
-      if (!entry.uses[0].forward) std::swap(e.v0, e.v1);  // keep the face on the left
-      e.left = entry.uses[0].face;
+    } else if (entry.uses == 1) {
+      if (!entry.use(0).forward) std::swap(e.v0, e.v1);  // keep the face on the left
+      e.left = entry.face[0];
       e.kind = EdgeKind::Boundary;
-    } else if (entry.uses.size() > 2) {
-      continue;  // reported as non-manifold; no solid is returned
     } else if (entry.marking_face != kNoFace) {
       e.left = e.right = entry.marking_face;
       e.kind = EdgeKind::Marking;
-    } else if (entry.free_line) {
-      e.kind = EdgeKind::Free;
     } else {
-      continue;
+      e.kind = EdgeKind::Free;
     }
+    if (!index_of.empty()) index_of[i] = static_cast<std::uint32_t>(solid.edges.size());
     solid.edges.push_back(e);
   }
+  edges = EdgeEntries(0);  // free the entries before the last pass
+
+  // Rings hold entry numbers; entries that were kept keep their order, so only dropped ones shift them.
+  if (!index_of.empty())
+    for (Face& f : solid.faces)
+      for (Ring& r : f.rings)
+        for (std::uint32_t& e : r.edges) e = index_of[e];
 }
 
 }  // namespace hlr::solid_detail

@@ -9,11 +9,16 @@ namespace hlr::solid_detail {
 
 Plane newell_plane(const std::vector<Point3>& vertices, const Ring& ring, double* twice_area) {
   const Vector3 n = newell_normal(vertices, ring);
+  if (twice_area) *twice_area = length(n);
+  return newell_plane(vertices, ring, n);
+}
+
+Plane newell_plane(const std::vector<Point3>& vertices, const Ring& ring, Vector3 n) {
   const double len = length(n);
-  if (twice_area) *twice_area = len;
   Vector3 sum{};
   for (VertexIndex i : ring.vertices) sum += to_vector(vertices[i]);
-  const Vector3 centroid = ring.vertices.empty() ? Vector3{} : sum / static_cast<double>(ring.vertices.size());
+  const Vector3 centroid =
+      ring.vertices.empty() ? Vector3{} : sum / static_cast<double>(ring.vertices.size());
   Plane plane;
   plane.normal = len > 0 ? n / len : Vector3{};
   plane.offset = -dot(plane.normal, centroid);
@@ -23,7 +28,8 @@ Plane newell_plane(const std::vector<Point3>& vertices, const Ring& ring, double
 FaceFrame FaceFrame::from_normal(Vector3 n, Point3 origin) {
   // Cross with the axis least aligned with n, so u is well conditioned.
   const double ax = std::abs(n.x), ay = std::abs(n.y), az = std::abs(n.z);
-  const Vector3 axis = (ax <= ay && ax <= az) ? Vector3{1, 0, 0} : (ay <= az ? Vector3{0, 1, 0} : Vector3{0, 0, 1});
+  const Vector3 axis =
+      (ax <= ay && ax <= az) ? Vector3{1, 0, 0} : (ay <= az ? Vector3{0, 1, 0} : Vector3{0, 0, 1});
   FaceFrame f;
   f.origin = origin;
   f.u = normalize(cross(n, axis));

@@ -14,6 +14,8 @@ namespace hlr::solid_detail {
 // vertices (the least-squares choice for that normal). `twice_area` receives |Newell normal|; the
 // normal is zero when the ring has no area.
 Plane newell_plane(const std::vector<Point3>& vertices, const Ring& ring, double* twice_area = nullptr);
+// The same from the ring's Newell normal, when it is known already.
+Plane newell_plane(const std::vector<Point3>& vertices, const Ring& ring, Vector3 newell);
 
 // An orthonormal frame (u, v) in a plane with normal n, u × v = n: a ring counter-clockwise seen from
 // the side n points to has positive signed area in (u, v) coordinates.

@@ -1,12 +1,12 @@
-// SolidBuilder: collects the input as given, then build() checks it in stages (vertices, faces, edges,
-// orientation, edge table), reporting every problem it finds rather than stopping at the first.
+// SolidBuilder: collects the input as flat arrays of interned ids or vertex numbers, then build() checks it
+// in stages (vertices, faces with their edges, orientation, edge table), reporting every problem it finds
+// rather than stopping at the first.
 #include "core/solid/solid_builder.hpp"
 
 #include <algorithm>
 #include <cmath>
-#include <numeric>
 #include <sstream>
-#include <unordered_map>
+#include <stdexcept>
 
 #include "core/solid/builder_detail.hpp"
 
@@ -24,77 +24,6 @@ std::string format_number(double value) {
 
 namespace {
 
-// Vertex stage: ids → indices in insertion order; non-finite coordinates, duplicate ids and two ids at
-// one position are errors. (`inputs` are SolidBuilder's private VertexInput records.)
-VertexTable resolve_vertices(const auto& inputs, Diagnostics& diagnostics) {
-  VertexTable table;
-  std::vector<std::int64_t> tags;
-  for (const auto& in : inputs) {
-    if (table.index_of.contains(in.id)) {
-      diagnostics.error("duplicate-vertex", "vertex '" + in.id + "' is declared twice; give each vertex its own id",
-                        in.tag);
-      continue;
-    }
-    const Point3 p = in.position;
-    const bool finite = is_finite(p);
-    if (!finite) {
-      const double bad = !std::isfinite(p.x) ? p.x : (!std::isfinite(p.y) ? p.y : p.z);
-      diagnostics.error("non-finite",
-                        "vertex '" + in.id + "' has a non-finite coordinate (" + format_number(bad) + ")", in.tag);
-    }
-    table.index_of.emplace(in.id, static_cast<VertexIndex>(table.positions.size()));
-    table.positions.push_back(p);
-    table.ids.push_back(in.id);
-    table.usable.push_back(finite);
-    tags.push_back(in.tag);
-  }
-
-  double extent = 0;
-  for (std::size_t i = 0; i < table.positions.size(); ++i)
-    if (table.usable[i])
-      for (int k = 0; k < 3; ++k) extent = std::max(extent, std::abs(table.positions[i][k]));
-  table.tolerance = Tolerance::for_extent(extent);
-
-  // Coincident positions: hash into cubic cells of twice the tolerance. A point then has neighbours
-  // within the tolerance only in its own cell and, per axis, the adjacent cell on the side of the
-  // nearer cell border: 8 cells to look in. Coordinates are at most 1e9 tolerances from the origin.
-  const double tol = table.tolerance.length, cell = 2 * tol;
-  const std::size_t n = table.positions.size();
-  auto key_of = [](std::int64_t x, std::int64_t y, std::int64_t z) {
-    std::uint64_t h = static_cast<std::uint64_t>(x) * 0x9E3779B97F4A7C15ull;
-    h ^= static_cast<std::uint64_t>(y) * 0xC2B2AE3D27D4EB4Full + (h << 6) + (h >> 2);
-    h ^= static_cast<std::uint64_t>(z) * 0x165667B19E3779F9ull + (h << 6) + (h >> 2);
-    return h;
-  };
-  std::unordered_map<std::uint64_t, std::vector<std::size_t>> cells;
-  cells.reserve(n);
-  std::vector<std::size_t> twin(n, n);  // earliest vertex at the same position
-  for (std::size_t i = 0; i < n; ++i) {
-    if (!table.usable[i]) continue;
-    const Point3 p = table.positions[i];
-    std::int64_t c[3], side[3];
-    for (int k = 0; k < 3; ++k) {
-      const double f = std::floor(p[k] / cell);
-      c[k] = static_cast<std::int64_t>(f);
-      side[k] = p[k] / cell - f < 0.5 ? -1 : 1;
-    }
-    for (int corner = 0; corner < 8; ++corner) {
-      const auto it = cells.find(key_of(c[0] + (corner & 1 ? side[0] : 0), c[1] + (corner & 2 ? side[1] : 0),
-                                        c[2] + (corner & 4 ? side[2] : 0)));
-      if (it == cells.end()) continue;
-      for (std::size_t j : it->second)  // hash collisions only add candidates
-        if (j < twin[i] && distance(p, table.positions[j]) <= tol) twin[i] = j;
-    }
-    cells[key_of(c[0], c[1], c[2])].push_back(i);
-  }
-  for (std::size_t i = 0; i < twin.size(); ++i)
-    if (twin[i] < table.positions.size())
-      diagnostics.error("duplicate-vertex",
-                        "vertex '" + table.ids[i] + "' is at the same position as vertex '" + table.ids[twin[i]] + "'",
-                        tags[i]);
-  return table;
-}
-
 // Options outside their domain (NaN, negative) fall back to the defaults rather than disabling checks.
 SolidBuildOptions sanitized(SolidBuildOptions o) {
   if (!(o.crease_angle_deg >= 0)) o.crease_angle_deg = 0;
@@ -107,23 +36,97 @@ SolidBuildOptions sanitized(SolidBuildOptions o) {
 
 SolidBuilder::SolidBuilder(SolidBuildOptions options) : options_(options) {}
 
-void SolidBuilder::add_vertex(const std::string& id, Point3 position, std::int64_t tag) {
-  vertices_.push_back({id, position, tag});
+void SolidBuilder::add_tag(std::vector<std::int64_t>& tags, std::size_t position, std::int64_t tag) {
+  if (tags.empty()) {
+    if (tag == -1) return;
+    tags.assign(position, -1);  // the first tag given: the earlier ones were -1
+  }
+  tags.push_back(tag);
 }
 
-void SolidBuilder::add_face(const std::vector<std::string>& outer, const std::vector<std::vector<std::string>>& holes,
-                            std::int64_t tag) {
-  FaceInput f{{outer}, false, tag};
-  f.rings.insert(f.rings.end(), holes.begin(), holes.end());
-  faces_.push_back(std::move(f));
+SolidBuilder::VertexRef SolidBuilder::id_ref(const std::string& id) {
+  const std::uint32_t number = ids_.intern(id);
+  if (number >= solid_detail::kIndexRef) throw std::length_error("SolidBuilder: too many vertex ids");
+  return number;
+}
+
+SolidBuilder::VertexRef SolidBuilder::index_ref(VertexIndex v) {
+  // A number too large for the reference's index bits names no indexed vertex: keep it as text.
+  return v < solid_detail::kIndexRef ? solid_detail::kIndexRef | v : id_ref(std::to_string(v));
+}
+
+void SolidBuilder::end_ring() {
+  if (refs_.size() > 0xffffffffu) throw std::length_error("SolidBuilder: too many vertex references");
+  ring_ends_.push_back(static_cast<std::uint32_t>(refs_.size()));
+}
+
+void SolidBuilder::end_face(std::int64_t tag, bool from_loop) {
+  if (ring_ends_.size() > 0xffffffffu) throw std::length_error("SolidBuilder: too many rings");
+  face_ends_.push_back(static_cast<std::uint32_t>(ring_ends_.size()));
+  add_tag(face_tags_, face_ends_.size() - 1, tag);
+  face_is_loop_.push_back(from_loop);
+}
+
+void SolidBuilder::add_vertex(const std::string& id, Point3 position, std::int64_t tag) {
+  if (positions_.size() >= solid_detail::kIndexRef)
+    throw std::length_error("SolidBuilder: too many vertices");
+  if (vertex_ids_.empty()) vertex_ids_.assign(positions_.size(), kIndexedId);
+  vertex_ids_.push_back(id_ref(id));
+  add_tag(vertex_tags_, positions_.size(), tag);
+  positions_.push_back(position);
+}
+
+VertexIndex SolidBuilder::add_vertex(Point3 position, std::int64_t tag) {
+  const std::size_t number = positions_.size();
+  if (number >= solid_detail::kIndexRef) throw std::length_error("SolidBuilder: too many vertices");
+  if (!vertex_ids_.empty()) vertex_ids_.push_back(kIndexedId);
+  add_tag(vertex_tags_, number, tag);
+  positions_.push_back(position);
+  return static_cast<VertexIndex>(number);
+}
+
+void SolidBuilder::add_face(const std::vector<std::string>& outer,
+                            const std::vector<std::vector<std::string>>& holes, std::int64_t tag) {
+  for (const std::string& id : outer) refs_.push_back(id_ref(id));
+  end_ring();
+  for (const std::vector<std::string>& hole : holes) {
+    for (const std::string& id : hole) refs_.push_back(id_ref(id));
+    end_ring();
+  }
+  end_face(tag, false);
 }
 
 void SolidBuilder::add_face_loop(const std::vector<std::string>& loop, std::int64_t tag) {
-  faces_.push_back({{loop}, true, tag});
+  for (const std::string& id : loop) refs_.push_back(id_ref(id));
+  end_ring();
+  end_face(tag, true);
 }
 
 void SolidBuilder::add_line(const std::string& a, const std::string& b, std::int64_t tag) {
-  lines_.push_back({a, b, tag});
+  const VertexRef ra = id_ref(a);
+  lines_.push_back({ra, id_ref(b), tag});
+}
+
+void SolidBuilder::add_indexed_face(std::span<const std::vector<VertexIndex>> rings, std::int64_t tag) {
+  for (const std::vector<VertexIndex>& ring : rings) {
+    for (VertexIndex v : ring) refs_.push_back(index_ref(v));
+    end_ring();
+  }
+  end_face(tag, false);
+}
+
+void SolidBuilder::add_indexed_line(VertexIndex a, VertexIndex b, std::int64_t tag) {
+  const VertexRef ra = index_ref(a);
+  lines_.push_back({ra, index_ref(b), tag});
+}
+
+void SolidBuilder::reserve(std::size_t vertices, std::size_t faces, std::size_t references) {
+  positions_.reserve(positions_.size() + vertices);
+  if (!vertex_ids_.empty()) vertex_ids_.reserve(vertex_ids_.size() + vertices);
+  refs_.reserve(refs_.size() + references);
+  ring_ends_.reserve(ring_ends_.size() + faces);
+  face_ends_.reserve(face_ends_.size() + faces);
+  face_is_loop_.reserve(face_is_loop_.size() + faces);
 }
 
 SolidBuildResult SolidBuilder::build() const {
@@ -132,31 +135,65 @@ SolidBuildResult SolidBuilder::build() const {
   Diagnostics diagnostics(result.diagnostics);
   const SolidBuildOptions options = sanitized(options_);
 
-  const VertexTable vertices = resolve_vertices(vertices_, diagnostics);
+  VertexTable vertices = resolve_vertices(positions_, Tags{vertex_tags_}, vertex_ids_, ids_, diagnostics);
 
-  std::vector<PreparedFace> faces;
-  faces.reserve(faces_.size());
-  for (std::size_t i = 0; i < faces_.size(); ++i)
-    faces.push_back(prepare_face(faces_[i].rings, faces_[i].from_loop, static_cast<int>(i + 1), faces_[i].tag,
-                                 vertices, options, diagnostics));
-
-  EdgeEntries edges = collect_edges(faces, vertices, diagnostics);
-  const bool closed = orient_faces(faces, edges, vertices, options, diagnostics);
-
+  // Faces one at a time: resolve the references, prepare, enter the edges; the rings go straight into
+  // the solid. Faces keep their input positions (invalid ones stay empty; they always come with an error).
+  const std::size_t n = face_ends_.size();
+  const Tags face_tags{face_tags_};
   Solid solid;
-  solid.vertices = vertices.positions;
-  solid.closed = closed;
-  solid.crease_angle_deg = options.crease_angle_deg;
-  // Faces keep their input positions (invalid ones stay empty; they always come with an error).
-  for (PreparedFace& f : faces) {
-    solid.faces.push_back(Face{f.rings});
-    solid.planes.push_back(f.plane);
+  solid.faces.resize(n);
+  solid.planes.resize(n);
+  std::vector<bool> valid(n, false);
+  std::vector<double> sizes(lines_.empty() ? 0 : n);    // only add_line needs them
+  EdgeEntries edges(refs_.size() / 2 + lines_.size());  // a closed surface names each edge twice
+  FaceWork work;
+  std::vector<std::string> unknown;
+  for (std::size_t f = 0; f < n; ++f) {
+    // Resolve ids; name each unknown id once.
+    work.loops.clear();
+    unknown.clear();
+    bool resolved = true;
+    for (std::size_t r = f == 0 ? 0 : face_ends_[f - 1]; r < face_ends_[f]; ++r) {
+      for (std::size_t k = r == 0 ? 0 : ring_ends_[r - 1]; k < ring_ends_[r]; ++k) {
+        const VertexIndex v = vertices.resolve(refs_[k]);
+        if (v == kNoVertex) {
+          resolved = false;
+          std::string id = vertices.ref_text(refs_[k]);
+          if (std::find(unknown.begin(), unknown.end(), id) == unknown.end()) {
+            diagnostics.error("unknown-vertex",
+                              "face " + std::to_string(f + 1) + " names vertex '" + id +
+                                  "' which is not declared; declare it with 'vertex " + id +
+                                  " = (x, y, z)' before the face",
+                              face_tags[f]);
+            unknown.push_back(std::move(id));
+          }
+          continue;
+        }
+        if (!vertices.usable[v]) resolved = false;  // non-finite: reported with the vertex
+        work.loops.vertices.push_back(v);
+      }
+      work.loops.close();
+    }
+    if (!resolved) continue;
+    if (work.loops.size() == 0) work.loops.close();  // no rings at all: one empty ring
+    if (!prepare_face(work, face_is_loop_[f], static_cast<int>(f + 1), face_tags[f], vertices, options,
+                      diagnostics))
+      continue;
+    valid[f] = true;
+    solid.planes[f] = work.plane;
+    if (!sizes.empty()) sizes[f] = work.size;
+    enter_face_edges(edges, static_cast<FaceIndex>(f), work);
+    solid.faces[f].rings = std::move(work.rings);
   }
-  std::vector<LineSpec> lines;
-  lines.reserve(lines_.size());
-  for (const LineInput& l : lines_) lines.push_back({l.a, l.b, l.tag});
-  build_edge_table(solid, edges, faces, lines, vertices, options, diagnostics);
-  link_ring_edges(solid);
+  report_non_manifold(edges, face_tags, vertices, diagnostics);
+  if (lines_.empty()) edges.release_index();  // only add_line looks edges up again
+
+  solid.closed =
+      orient_faces(solid.faces, solid.planes, valid, face_tags, edges, vertices, options, diagnostics);
+  solid.crease_angle_deg = options.crease_angle_deg;
+  build_edge_table(solid, edges, valid, sizes, lines_, vertices, options, diagnostics);
+  solid.vertices = vertices.input_of.empty() ? positions_ : std::move(vertices.kept);
 
   if (!diagnostics.has_errors()) result.solid = std::move(solid);
   return result;

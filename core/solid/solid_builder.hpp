@@ -12,10 +12,12 @@
 
 #include <cstdint>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
 #include "core/solid/solid.hpp"
+#include "core/solid/vertex_ids.hpp"
 #include "core/tolerance.hpp"
 
 namespace hlr {
@@ -23,8 +25,8 @@ namespace hlr {
 struct SolidDiagnostic {
   enum class Severity { Warning, Error };
   Severity severity = Severity::Error;
-  std::string code;     // stable short name, e.g. "non-planar"
-  std::string message;  // full sentence naming the face/vertex ids and what to do
+  std::string code;       // stable short name, e.g. "non-planar"
+  std::string message;    // full sentence naming the face/vertex ids and what to do
   std::int64_t tag = -1;  // the tag given with the offending vertex/face/line (e.g. a source position)
 };
 
@@ -58,8 +60,8 @@ class SolidBuilder {
   // Vertex ids are integers or identifiers, kept as text ("1", "top").
   void add_vertex(const std::string& id, Point3 position, std::int64_t tag = -1);
   // A planar face: outer loop counter-clockwise seen from outside, then holes.
-  void add_face(const std::vector<std::string>& outer, const std::vector<std::vector<std::string>>& holes = {},
-                std::int64_t tag = -1);
+  void add_face(const std::vector<std::string>& outer,
+                const std::vector<std::vector<std::string>>& holes = {}, std::int64_t tag = -1);
   // A face given as one closed loop in the theses' style (Desens' LSTFAC, Albers' .SUR): edges traversed
   // in both directions within the loop are lines on the face (bridges to holes, markings), the rest
   // form the outer boundary and the holes.
@@ -68,27 +70,40 @@ class SolidBuilder {
   // free line.
   void add_line(const std::string& a, const std::string& b, std::int64_t tag = -1);
 
+  // Indexed input (generators, mesh files), with the same checks and messages but no id strings kept: a
+  // vertex added this way has its number among all added vertices as id, in decimal ("0", "1", ...),
+  // and returns that number. Indexed faces and lines name vertices by such numbers; they behave exactly
+  // like add_face and add_line with the decimal ids, so both styles may be mixed.
+  VertexIndex add_vertex(Point3 position, std::int64_t tag = -1);
+  // rings[0] is the outer loop, the others holes, as in add_face.
+  void add_indexed_face(std::span<const std::vector<VertexIndex>> rings, std::int64_t tag = -1);
+  void add_indexed_line(VertexIndex a, VertexIndex b, std::int64_t tag = -1);
+  // Optional: room for this many more vertices, faces and vertex references in all rings.
+  void reserve(std::size_t vertices, std::size_t faces, std::size_t references);
+
   SolidBuildResult build() const;
 
  private:
-  struct VertexInput {
-    std::string id;
-    Point3 position;
-    std::int64_t tag;
-  };
-  struct FaceInput {
-    std::vector<std::vector<std::string>> rings;  // outer first, or the single loop of add_face_loop
-    bool from_loop;                               // split into rings and on-face lines by build()
-    std::int64_t tag;
-  };
-  struct LineInput {
-    std::string a, b;
-    std::int64_t tag;
-  };
+  using VertexRef = solid_detail::VertexRef;
+  static constexpr std::uint32_t kIndexedId = solid_detail::IdTable::kNone;
+  VertexRef id_ref(const std::string& id);
+  VertexRef index_ref(VertexIndex v);
+  void end_ring();
+  void end_face(std::int64_t tag, bool from_loop);
+  static void add_tag(std::vector<std::int64_t>& tags, std::size_t position, std::int64_t tag);
+
+  // The input as flat arrays; a face's rings are ring_ends_[face_ends_[f − 1] .. face_ends_[f]).
   SolidBuildOptions options_;
-  std::vector<VertexInput> vertices_;
-  std::vector<FaceInput> faces_;
-  std::vector<LineInput> lines_;
+  std::vector<Point3> positions_;
+  std::vector<std::int64_t> vertex_tags_;  // empty while every tag is -1 (likewise face_tags_)
+  std::vector<std::uint32_t> vertex_ids_;  // interned id, or kIndexedId; empty while every vertex is indexed
+  solid_detail::IdTable ids_;
+  std::vector<VertexRef> refs_;           // all rings, back to back
+  std::vector<std::uint32_t> ring_ends_;  // end of each ring in refs_
+  std::vector<std::uint32_t> face_ends_;  // end of each face's rings in ring_ends_
+  std::vector<std::int64_t> face_tags_;
+  std::vector<bool> face_is_loop_;  // from add_face_loop: split into rings and on-face lines by build()
+  std::vector<solid_detail::LineSpec> lines_;
 };
 
 }  // namespace hlr

@@ -1,0 +1,157 @@
+// SolidBuilder's indexed input (add_vertex(Point3), add_indexed_face, add_indexed_line): the same solid
+// and the same diagnostics as named input with the decimal ids, also when both styles are mixed.
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+#include "tests/core/solid/solid_test_helpers.hpp"
+
+namespace hlr {
+namespace {
+
+using namespace solid_test;
+using Rings = std::vector<std::vector<VertexIndex>>;
+
+const Point3 kCube[8] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0},
+                         {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}};
+// Counter-clockwise from outside, except face 3 (clockwise: reoriented with a warning).
+const Rings kCubeFaces[6] = {{{0, 3, 2, 1}}, {{4, 5, 6, 7}}, {{0, 1, 5, 4}},
+                             {{2, 6, 7, 3}}, {{0, 4, 7, 3}}, {{1, 2, 6, 5}}};
+
+std::vector<std::string> named(const std::vector<VertexIndex>& ring) {
+  std::vector<std::string> ids;
+  for (VertexIndex v : ring) ids.push_back(std::to_string(v));
+  return ids;
+}
+
+void expect_same(const SolidBuildResult& a, const SolidBuildResult& b) {
+  ASSERT_EQ(a.diagnostics.size(), b.diagnostics.size()) << all_messages(a) << "vs\n" << all_messages(b);
+  for (std::size_t i = 0; i < a.diagnostics.size(); ++i) {
+    EXPECT_EQ(a.diagnostics[i].severity, b.diagnostics[i].severity);
+    EXPECT_EQ(a.diagnostics[i].code, b.diagnostics[i].code);
+    EXPECT_EQ(a.diagnostics[i].message, b.diagnostics[i].message);
+    EXPECT_EQ(a.diagnostics[i].tag, b.diagnostics[i].tag);
+  }
+  ASSERT_EQ(a.ok(), b.ok());
+  if (!a.ok()) return;
+  const Solid &s = *a.solid, &t = *b.solid;
+  EXPECT_EQ(s.vertices, t.vertices);
+  ASSERT_EQ(s.faces.size(), t.faces.size());
+  for (std::size_t f = 0; f < s.faces.size(); ++f) {
+    ASSERT_EQ(s.faces[f].rings.size(), t.faces[f].rings.size());
+    for (std::size_t k = 0; k < s.faces[f].rings.size(); ++k) {
+      EXPECT_EQ(s.faces[f].rings[k].vertices, t.faces[f].rings[k].vertices);
+      EXPECT_EQ(s.faces[f].rings[k].edges, t.faces[f].rings[k].edges);
+    }
+  }
+  ASSERT_EQ(s.edges.size(), t.edges.size());
+  for (std::size_t e = 0; e < s.edges.size(); ++e) {
+    EXPECT_EQ(s.edges[e].v0, t.edges[e].v0);
+    EXPECT_EQ(s.edges[e].v1, t.edges[e].v1);
+    EXPECT_EQ(s.edges[e].left, t.edges[e].left);
+    EXPECT_EQ(s.edges[e].right, t.edges[e].right);
+    EXPECT_EQ(s.edges[e].kind, t.edges[e].kind);
+  }
+  EXPECT_EQ(s.closed, t.closed);
+}
+
+TEST(SolidIndexedBuilder, CubeMatchesNamedInput) {
+  SolidBuilder indexed, by_name;
+  for (int i = 0; i < 8; ++i) {
+    EXPECT_EQ(indexed.add_vertex(kCube[i], 10 + i), static_cast<VertexIndex>(i));
+    by_name.add_vertex(std::to_string(i), kCube[i], 10 + i);
+  }
+  for (int f = 0; f < 6; ++f) {
+    indexed.add_indexed_face(kCubeFaces[f], 20 + f);
+    by_name.add_face(named(kCubeFaces[f][0]), {}, 20 + f);
+  }
+  indexed.add_indexed_line(0, 6, 30);  // through the cube: a free line
+  by_name.add_line("0", "6", 30);
+  const SolidBuildResult r = indexed.build();
+  ASSERT_TRUE(r.ok()) << all_messages(r);
+  expect_valid_solid(*r.solid);
+  ASSERT_EQ(with_code(r, "reoriented").size(), 1u);
+  EXPECT_EQ(with_code(r, "reoriented")[0]->tag, 23);
+  EXPECT_EQ(count_kind(*r.solid, EdgeKind::Free), 1u);
+  expect_same(r, by_name.build());
+}
+
+TEST(SolidIndexedBuilder, DiagnosticsNameVerticesByNumber) {
+  SolidBuilder b;
+  for (int i = 0; i < 4; ++i) b.add_vertex(kCube[i]);
+  b.add_vertex(kCube[0]);  // vertex 4 coincides with vertex 0
+  b.add_indexed_face(Rings{{0, 1, 9, 2, 9}}, 7);
+  b.add_indexed_face(Rings{{0, 1, 1, 2, 3}});
+  b.add_indexed_line(3, 3000000000u, 8);
+  const SolidBuildResult r = b.build();
+  EXPECT_FALSE(r.ok());
+  const auto unknown = with_code(r, "unknown-vertex");
+  ASSERT_EQ(unknown.size(), 2u) << all_messages(r);
+  EXPECT_EQ(unknown[0]->message,
+            "face 1 names vertex '9' which is not declared; declare it with 'vertex 9 = (x, y, z)' before "
+            "the face");
+  EXPECT_EQ(unknown[0]->tag, 7);
+  EXPECT_EQ(
+      unknown[1]->message,
+      "line 1 names vertex '3000000000' which is not declared; declare it with 'vertex 3000000000 = (x, y, "
+      "z)' before the line");
+  ASSERT_EQ(with_code(r, "duplicate-vertex").size(), 1u);
+  EXPECT_EQ(with_code(r, "duplicate-vertex")[0]->message, "vertex '4' is at the same position as vertex '0'");
+  ASSERT_EQ(with_code(r, "repeated-vertex").size(), 1u);
+  EXPECT_EQ(with_code(r, "repeated-vertex")[0]->message,
+            "face 2 lists vertex '1' twice in a row; dropped the repeat");
+  EXPECT_EQ(with_code(r, "repeated-vertex")[0]->tag, -1);  // untagged
+}
+
+TEST(SolidIndexedBuilder, MixedInputBehavesLikeDecimalIds) {
+  // Indexed vertex 1 has id "1"; named faces and lines reach it by that id, and an indexed reference is
+  // the decimal id: 0 names no vertex here, as vertex 0 is called "a".
+  SolidBuilder b;
+  b.add_vertex("a", {0, 0, 0});
+  EXPECT_EQ(b.add_vertex(Point3{1, 0, 0}), 1u);
+  b.add_vertex("2", {1, 1, 0});
+  b.add_face({"a", "1", "2"}, {}, 5);
+  b.add_indexed_face(Rings{{0, 1, 2}}, 6);
+  const SolidBuildResult r = b.build();
+  const auto unknown = with_code(r, "unknown-vertex");
+  ASSERT_EQ(unknown.size(), 1u) << all_messages(r);
+  EXPECT_EQ(unknown[0]->message,
+            "face 2 names vertex '0' which is not declared; declare it with 'vertex 0 = (x, y, z)' before "
+            "the face");
+  EXPECT_EQ(unknown[0]->tag, 6);
+
+  // An id declared by name and again by number is a duplicate like any other.
+  SolidBuilder d;
+  d.add_vertex("1", {0, 0, 0}, 3);
+  d.add_vertex(Point3{5, 5, 5}, 4);  // number 1, id "1"
+  const SolidBuildResult rd = d.build();
+  ASSERT_EQ(with_code(rd, "duplicate-vertex").size(), 1u) << all_messages(rd);
+  EXPECT_EQ(with_code(rd, "duplicate-vertex")[0]->message,
+            "vertex '1' is declared twice; give each vertex its own id");
+  EXPECT_EQ(with_code(rd, "duplicate-vertex")[0]->tag, 4);
+}
+
+TEST(SolidIndexedBuilder, PlateWithHoleAndLoopFaceMatchNamedInput) {
+  // A square plate with a square hole as indexed rings, and the same face as one bridged loop.
+  const Point3 p[8] = {{0, 0, 0}, {4, 0, 0}, {4, 4, 0}, {0, 4, 0},
+                       {1, 1, 0}, {1, 3, 0}, {3, 3, 0}, {3, 1, 0}};
+  const Rings plate = {{0, 1, 2, 3}, {4, 5, 6, 7}};
+  SolidBuilder indexed, by_name;
+  for (int i = 0; i < 8; ++i) {
+    indexed.add_vertex(p[i]);
+    by_name.add_vertex(std::to_string(i), p[i]);
+  }
+  indexed.add_indexed_face(plate, 1);
+  by_name.add_face(named(plate[0]), {named(plate[1])}, 1);
+  indexed.add_face_loop({"0", "1", "2", "3", "0", "4", "5", "6", "7", "4"}, 2);
+  by_name.add_face_loop({"0", "1", "2", "3", "0", "4", "5", "6", "7", "4"}, 2);
+  indexed.add_indexed_line(0, 2, 3);  // a diagonal crossing the hole: still a marking (end points only)
+  by_name.add_line("0", "2", 3);
+  const SolidBuildResult r = indexed.build();
+  EXPECT_EQ(with_code(r, "reoriented").size(), 1u) << all_messages(r);  // two faces back to back
+  expect_same(r, by_name.build());
+}
+
+}  // namespace
+}  // namespace hlr
