@@ -1,0 +1,65 @@
+// Built-in functions and constants. Each module (builtins_*.cpp) ends with a registration table of
+// {name, signature, implementation} rows (Lua's luaL_Reg) and a register_* function that adds them;
+// adding a built-in is one function and one row. Built-ins are looked up after every scope, so a script
+// may shadow any of them with its own `let` or `def`.
+#pragma once
+
+#include <functional>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include "runtime/arguments.hpp"
+#include "runtime/function.hpp"
+#include "runtime/value.hpp"
+
+namespace hlr::runtime {
+
+struct BuiltinEntry {
+  const char* name;
+  const char* signature;  // every accepted form, shown in hints
+  BuiltinImpl impl;
+};
+
+class BuiltinTable {
+ public:
+  void add(const BuiltinEntry& entry);
+  template <std::size_t N>
+  void add_all(const BuiltinEntry (&entries)[N]) {
+    for (const BuiltinEntry& e : entries) add(e);
+  }
+  void add_constant(const std::string& name, Value value);
+
+  const Value* find(const std::string& name) const;
+  std::vector<std::string> names() const;
+
+ private:
+  std::unordered_map<std::string, Value> entries_;
+};
+
+// Every module's built-ins, registered once.
+const BuiltinTable& builtins();
+
+void register_math_builtins(BuiltinTable& table);       // builtins_math.cpp
+void register_core_builtins(BuiltinTable& table);       // builtins_core.cpp: len, range, str, group, place
+void register_vector_builtins(BuiltinTable& table);     // builtins_vectors.cpp: vectors and 2-D outlines
+void register_transform_builtins(BuiltinTable& table);  // builtins_transforms.cpp
+void register_solid_builtins(BuiltinTable& table);      // builtins_solids.cpp
+void register_shape_builtins(BuiltinTable& table);      // builtins_shapes.cpp: pyramid, platonic, cone, ...
+
+void register_camera_builtins(BuiltinTable& table);  // builtins_cameras.cpp
+
+// ---- helpers shared by the modules ------------------------------------------------------------------
+
+// A built-in's numeric result; a NaN or infinity is an error at the call: "sqrt(-1) is not a real number",
+// "pow(10, 400) overflows".
+Value finite_number(const CallArgs& call, double x);
+Value finite_vector(const CallArgs& call, Vector3 v);
+
+// A solid made by a generator, named after it ("box"). `faces` (an upper bound, known from the
+// arguments) is charged to the frame's budget before anything is built, so sphere(1, slices: 1e6) is a
+// limit error, not an exhausted memory. The generator's invalid_argument or runtime_error becomes an
+// error at the call.
+Value generated_solid(const CallArgs& call, std::size_t faces, const std::function<Solid()>& make);
+
+}  // namespace hlr::runtime

@@ -1,0 +1,117 @@
+// Cameras: lookat, ortho, orbit (Albers), desens (Desens' twelve degrees of freedom), built by
+// core/camera. A CameraError names the parameter; it is reported at that argument.
+#include <stdexcept>
+
+#include "core/camera/camera_error.hpp"
+#include "core/camera/desens_camera.hpp"
+#include "core/camera/lookat_camera.hpp"
+#include "core/camera/orbit_camera.hpp"
+#include "core/camera/ortho_camera.hpp"
+#include "runtime/builtins.hpp"
+
+namespace hlr::runtime {
+namespace {
+
+constexpr KindSet kNumber = kinds(ValueKind::Number);
+constexpr KindSet kVector = kinds(ValueKind::Vector);
+
+// Builds the camera; a CameraError goes to the argument it names (core's names, or their script aliases).
+template <typename Make>
+Value make_camera(const Bound& b, const std::vector<Param>& params, Make&& make) {
+  try {
+    return Value::camera(make());
+  } catch (const CameraError& e) {
+    std::string name = e.parameter;
+    if (name == "object_position") name = "object";
+    if (name == "observer_position") name = "observer";
+    for (std::size_t i = 0; i < params.size(); ++i)
+      if (params[i].name == name) b.call().fail(b.span(i), e.what());
+    b.call().fail_call(e.what());
+  }
+}
+
+Value lookat_(CallArgs& call) {
+  static const std::vector<Param> params = {required("eye", kVector),
+                                            required("target", kVector),
+                                            optional("up", kVector, Value::vector({0, 0, 1})),
+                                            optional("fov", kNumber, Value::number(40)),
+                                            optional("aspect", kNumber),
+                                            optional("near", kNumber)};
+  const Bound b = call.bind(params);
+  LookatParameters p;
+  p.eye = b.point(0);
+  p.target = b.point(1);
+  p.up = b.vector(2);
+  p.fov_deg = b.number(3);
+  if (b.present(4)) p.aspect = b.positive(4);
+  if (b.present(5)) p.near = b.positive(5);
+  return make_camera(b, params, [&] { return lookat_camera(p); });
+}
+
+Value ortho_(CallArgs& call) {
+  static const std::vector<Param> params = {required("eye", kVector), required("target", kVector),
+                                            optional("up", kVector, Value::vector({0, 0, 1})),
+                                            required("height", kNumber), optional("aspect", kNumber)};
+  const Bound b = call.bind(params);
+  OrthoParameters p;
+  p.eye = b.point(0);
+  p.target = b.point(1);
+  p.up = b.vector(2);
+  p.height = b.number(3);
+  if (b.present(4)) p.aspect = b.positive(4);
+  return make_camera(b, params, [&] { return ortho_camera(p); });
+}
+
+Value orbit_(CallArgs& call) {
+  static const std::vector<Param> params = {
+      optional("theta", kNumber, Value::number(45)), optional("phi", kNumber, Value::number(90)),
+      optional("rho", kNumber, Value::number(425)), optional("d", kNumber, Value::number(1549))};
+  const Bound b = call.bind(params);
+  OrbitParameters p;
+  p.theta_deg = b.number(0);
+  p.phi_deg = b.number(1);
+  p.rho = b.number(2);
+  p.d = b.number(3);
+  return make_camera(b, params, [&] { return orbit_camera(p); });
+}
+
+Value desens_(CallArgs& call) {
+  static const std::vector<Param> params = {
+      required("object", kVector),
+      optional("attitude", kVector, Value::vector({})),
+      required("observer", kVector),
+      optional("heading", kVector, Value::vector({})),
+      optional("focal", kNumber, Value::number(1.5)),
+      optional("scale", kNumber, Value::number(0.5)),
+      optional("offset", kinds(ValueKind::List), Value::list({Value::number(0), Value::number(0)})),
+      optional("thesis_pi", kinds(ValueKind::Bool), Value::boolean(false))};
+  const Bound b = call.bind(params);
+  DesensParameters p;
+  p.object_position = b.point(0);
+  p.attitude = b.vector(1);
+  p.observer_position = b.point(2);
+  p.heading = b.vector(3);
+  p.focal = b.number(4);
+  p.scale = b.number(5);
+  const std::vector<double> offset = b.numbers(6);
+  if (offset.size() != 2) b.fail(6, "must be two numbers [yoff, zoff]");
+  p.offset = {offset[0], offset[1]};
+  p.thesis_pi = b.boolean(7);
+  return make_camera(b, params, [&] { return desens_camera(p); });
+}
+
+const BuiltinEntry kCameraBuiltins[] = {
+    {"lookat", "lookat(eye:, target:, up: (0, 0, 1), fov: 40, aspect:, near:)", lookat_},
+    {"ortho", "ortho(eye:, target:, up: (0, 0, 1), height:, aspect:)", ortho_},
+    {"orbit", "orbit(theta: 45, phi: 90, rho: 425, d: 1549)", orbit_},
+    {"desens",
+     "desens(object:, attitude: (0, 0, 0), observer:, heading: (0, 0, 0), focal: 1.5, scale: 0.5, "
+     "offset: [0, 0], thesis_pi: false)",
+     desens_},
+};
+
+}  // namespace
+
+void register_camera_builtins(BuiltinTable& table) { table.add_all(kCameraBuiltins); }
+
+}  // namespace hlr::runtime

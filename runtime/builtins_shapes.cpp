@@ -1,0 +1,176 @@
+// More solid generators (stdlib/shapes.hpp): pyramids, the Platonic solids, cones, extrusions, surfaces of
+// revolution, sweeps and heightfields. As in builtins_solids.cpp, this file only checks arguments and
+// charges the face budget; the stdlib does the geometry and its invalid_argument messages (which name the
+// parameter as the script does) become errors at the call.
+#include <cmath>
+#include <optional>
+#include <string>
+
+#include "runtime/builtins.hpp"
+#include "runtime/format_value.hpp"
+#include "stdlib/shapes.hpp"
+
+namespace hlr::runtime {
+namespace {
+
+constexpr KindSet kNumber = kinds(ValueKind::Number);
+constexpr KindSet kVector = kinds(ValueKind::Vector);
+constexpr KindSet kList = kinds(ValueKind::List);
+constexpr int kMaxCount = static_cast<int>(kMaxFaces);
+
+Param crease_param() { return optional("crease", kNumber, Value::number(30)); }
+
+double crease(const Bound& b, std::size_t i) {
+  const double deg = b.number(i);
+  if (!(deg >= 0 && deg <= 180))
+    b.fail(i, "must be between 0 and 180 degrees (got " + format_number(deg) + ")");
+  return deg;
+}
+
+// A list of at least `min` points.
+std::vector<Point3> points_arg(const Bound& b, std::size_t i, std::size_t min) {
+  const std::vector<Vector3> vs = b.vectors(i);
+  if (vs.size() < min)
+    b.fail(i, "needs at least " + std::to_string(min) + " points, got " + std::to_string(vs.size()));
+  std::vector<Point3> out;
+  out.reserve(vs.size());
+  for (const Vector3& v : vs) out.push_back(to_point(v));
+  return out;
+}
+
+// Points of a plane curve given as vectors: (x, y, 0) in the xy plane (`drop` = 2), or (r, 0, z) in the
+// x–z plane (`drop` = 1).
+std::vector<Point2> plane_points_arg(const Bound& b, std::size_t i, std::size_t min, int drop) {
+  const std::vector<Point3> ps = points_arg(b, i, min);
+  std::vector<Point2> out;
+  out.reserve(ps.size());
+  for (std::size_t k = 0; k < ps.size(); ++k) {
+    const double off = drop == 2 ? ps[k].z : ps[k].y;
+    if (off != 0)
+      b.fail(i, "point " + std::to_string(k) + " has " + (drop == 2 ? "z" : "y") + " = " +
+                    format_number(off) +
+                    (drop == 2 ? "; outlines lie in the xy plane (z = 0)"
+                               : "; a profile lies in the x-z plane: (r, 0, z)"));
+    out.push_back(drop == 2 ? Point2{ps[k].x, ps[k].y} : Point2{ps[k].x, ps[k].z});
+  }
+  return out;
+}
+
+Value pyramid_(CallArgs& call) {
+  static const std::vector<Param> params = {required("outline", kList), required("apex", kVector)};
+  const Bound b = call.bind(params);
+  const std::vector<Point3> outline = points_arg(b, 0, 3);
+  const Point3 apex = b.point(1);
+  return generated_solid(call, outline.size() + 1, [&] { return stdlib::pyramid(outline, apex); });
+}
+
+template <Solid (*Make)(double)>
+Value platonic_(CallArgs& call) {
+  static const std::vector<Param> params = {optional("r", kNumber, Value::number(1))};
+  const Bound b = call.bind(params);
+  const double r = b.positive(0);
+  return generated_solid(call, 20, [&] { return Make(r); });
+}
+
+Value cone_(CallArgs& call) {
+  static const std::vector<Param> params = {required("r", kNumber), required("h", kNumber),
+                                            optional("top", kNumber, Value::number(0)),
+                                            optional("sides", kNumber, Value::number(32)), crease_param()};
+  const Bound b = call.bind(params);
+  const double r = b.non_negative(0), h = b.positive(1), top = b.non_negative(2);
+  if (r == 0 && top == 0) b.fail(0, "and top cannot both be 0");
+  const int sides = b.whole(3, 3, kMaxCount);
+  const double deg = crease(b, 4);
+  return generated_solid(call, static_cast<std::size_t>(sides) + 2,
+                         [&] { return stdlib::cone(r, h, top, sides, deg); });
+}
+
+Value extrude_(CallArgs& call) {
+  static const std::vector<Param> params = {required("outline", kList), required("v", kVector),
+                                            optional("holes", kList, Value::list({}))};
+  const Bound b = call.bind(params);
+  const std::vector<Point3> outline = points_arg(b, 0, 3);
+  const Vector3 v = b.vector(1);
+  std::vector<std::vector<Point3>> holes;
+  std::size_t faces = outline.size() + 2;
+  const Value& hole_list = b.value(2);
+  for (std::size_t k = 0; k < sequence_size(hole_list); ++k) {
+    const Value hole = sequence_item(hole_list, k);
+    if (!hole.is_sequence())
+      b.fail(2, "hole " + std::to_string(k) + " is " + kind_with_article(hole.kind()) +
+                    ", expected a list of points");
+    CallArgs one(call.site(), {Arg{"", {}, hole, b.span(2)}}, call.budget());
+    static const std::vector<Param> hole_params = {required("holes", kList)};
+    holes.push_back(points_arg(one.bind(hole_params), 0, 3));
+    faces += holes.back().size();
+  }
+  return generated_solid(call, faces, [&] { return stdlib::extrude(outline, v, holes); });
+}
+
+Value revolve_(CallArgs& call) {
+  static const std::vector<Param> params = {required("profile", kList),
+                                            optional("segments", kNumber, Value::number(32)),
+                                            optional("angle", kNumber, Value::number(360)), crease_param()};
+  const Bound b = call.bind(params);
+  const std::vector<Point2> profile = plane_points_arg(b, 0, 2, 1);
+  const int segments = b.whole(1, 1, kMaxCount);
+  const double angle = b.positive(2);
+  const double deg = crease(b, 3);
+  const std::size_t faces = static_cast<std::size_t>(segments) * profile.size() + 2;
+  return generated_solid(call, faces, [&] { return stdlib::revolve(profile, segments, angle, deg); });
+}
+
+Value sweep_(CallArgs& call) {
+  static const std::vector<Param> params = {required("profile", kList), required("path", kList),
+                                            crease_param()};
+  const Bound b = call.bind(params);
+  const std::vector<Point2> profile = plane_points_arg(b, 0, 3, 2);
+  const std::vector<Point3> path = points_arg(b, 1, 2);
+  const double deg = crease(b, 2);
+  const std::size_t faces = profile.size() * path.size() + 2;
+  return generated_solid(call, faces, [&] { return stdlib::sweep(profile, path, deg); });
+}
+
+Value heightfield_(CallArgs& call) {
+  static const std::vector<Param> params = {
+      required("values", kList), optional("dx", kNumber, Value::number(1)),
+      optional("dy", kNumber, Value::number(1)), optional("base", kNumber), crease_param()};
+  const Bound b = call.bind(params);
+  std::vector<std::vector<double>> rows;
+  const Value& list = b.value(0);
+  std::size_t cells = 0;
+  for (std::size_t i = 0; i < sequence_size(list); ++i) {
+    const Value row = sequence_item(list, i);
+    if (!row.is_sequence())
+      b.fail(0, "row " + std::to_string(i) + " is " + kind_with_article(row.kind()) +
+                    ", expected a list of heights");
+    CallArgs one(call.site(), {Arg{"", {}, row, b.span(0)}}, call.budget());
+    static const std::vector<Param> row_params = {required("values", kList)};
+    rows.push_back(one.bind(row_params).numbers(0));
+    cells += rows.back().size();
+  }
+  const double dx = b.positive(1), dy = b.positive(2);
+  const std::optional<double> base = b.present(3) ? std::optional<double>(b.number(3)) : std::nullopt;
+  const double deg = crease(b, 4);
+  return generated_solid(call, 2 * cells + 5, [&] { return stdlib::heightfield(rows, dx, dy, base, deg); });
+}
+
+const BuiltinEntry kShapeBuiltins[] = {
+    {"pyramid", "pyramid(outline, apex)", pyramid_},
+    {"tetrahedron", "tetrahedron(r: 1)", platonic_<stdlib::tetrahedron>},
+    {"hexahedron", "hexahedron(r: 1)", platonic_<stdlib::hexahedron>},
+    {"octahedron", "octahedron(r: 1)", platonic_<stdlib::octahedron>},
+    {"dodecahedron", "dodecahedron(r: 1)", platonic_<stdlib::dodecahedron>},
+    {"icosahedron", "icosahedron(r: 1)", platonic_<stdlib::icosahedron>},
+    {"cone", "cone(r, h, top: 0, sides: 32, crease: 30)", cone_},
+    {"extrude", "extrude(outline, v, holes: [])", extrude_},
+    {"revolve", "revolve(profile, segments: 32, angle: 360, crease: 30)", revolve_},
+    {"sweep", "sweep(profile, path, crease: 30)", sweep_},
+    {"heightfield", "heightfield(values, dx: 1, dy: 1, base: none, crease: 30)", heightfield_},
+};
+
+}  // namespace
+
+void register_shape_builtins(BuiltinTable& table) { table.add_all(kShapeBuiltins); }
+
+}  // namespace hlr::runtime

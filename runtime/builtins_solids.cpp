@@ -1,0 +1,174 @@
+// Solid generators: each returns a solid named after its function ("box"). The table at the end lists
+// them; a new generator is one function here and one row there (the stdlib does the geometry, this file
+// only checks arguments and charges the frame's face budget before building).
+#include <cmath>
+#include <string>
+
+#include "runtime/builtins.hpp"
+#include "runtime/format_value.hpp"
+#include "stdlib/generators.hpp"
+
+namespace hlr::runtime {
+namespace {
+
+constexpr KindSet kNumber = kinds(ValueKind::Number);
+constexpr KindSet kVector = kinds(ValueKind::Vector);
+constexpr KindSet kList = kinds(ValueKind::List);
+constexpr int kMaxCount = static_cast<int>(kMaxFaces);  // sides, slices, steps: the face limit bounds them
+
+Param crease_param(double fallback) { return optional("crease", kNumber, Value::number(fallback)); }
+
+double crease(const Bound& b, std::size_t i) {
+  const double deg = b.number(i);
+  if (!(deg >= 0 && deg <= 180))
+    b.fail(i, "must be between 0 and 180 degrees (got " + format_number(deg) + ")");
+  return deg;
+}
+
+// An outline argument: a list of at least 3 vectors in the xy plane.
+std::vector<Point2> outline_arg(const Bound& b, std::size_t i, const std::string& what = "") {
+  const std::vector<Vector3> points = b.vectors(i);
+  if (points.size() < 3) b.fail(i, what + "needs at least 3 points, got " + std::to_string(points.size()));
+  std::vector<Point2> out;
+  out.reserve(points.size());
+  for (std::size_t k = 0; k < points.size(); ++k) {
+    if (points[k].z != 0)
+      b.fail(i, what + "point " + std::to_string(k) + " has z = " + format_number(points[k].z) +
+                    "; outlines lie in the xy plane (z = 0)");
+    out.push_back({points[k].x, points[k].y});
+  }
+  return out;
+}
+
+Value box_(CallArgs& call) {
+  if (call.has_label("min") || call.has_label("max")) {
+    static const std::vector<Param> params = {required("min", kVector), required("max", kVector)};
+    const Bound b = call.bind(params);
+    const Point3 lo = b.point(0), hi = b.point(1);
+    if (!(lo.x < hi.x && lo.y < hi.y && lo.z < hi.z)) b.fail(1, "must exceed min on every axis");
+    return generated_solid(call, 6, [&] { return stdlib::box(lo, hi); });
+  }
+  if (call.has_label("size") || call.has_label("center")) {
+    static const std::vector<Param> params = {required("size", kVector),
+                                              optional("center", kVector, Value::vector({}))};
+    const Bound b = call.bind(params);
+    const Vector3 half = b.vector(0) / 2;
+    if (!(half.x > 0 && half.y > 0 && half.z > 0)) b.fail(0, "must be positive on every axis");
+    const Point3 c = b.point(1);
+    return generated_solid(call, 6, [&] { return stdlib::box(c - half, c + half); });
+  }
+  static const std::vector<Param> params = {required("sx", kNumber), required("sy", kNumber),
+                                            required("sz", kNumber)};
+  const Bound b = call.bind(params);
+  const Point3 hi{b.positive(0), b.positive(1), b.positive(2)};
+  return generated_solid(call, 6, [&] { return stdlib::box({0, 0, 0}, hi); });
+}
+
+Value cube_(CallArgs& call) {
+  static const std::vector<Param> params = {required("s", kNumber)};
+  const Bound b = call.bind(params);
+  const double h = b.positive(0) / 2;
+  return generated_solid(call, 6, [&] { return stdlib::box({-h, -h, -h}, {h, h, h}); });
+}
+
+Value prism_(CallArgs& call) {
+  static const std::vector<Param> params = {required("outline", kList), required("h", kNumber),
+                                            optional("holes", kList, Value::list({}))};
+  const Bound b = call.bind(params);
+  const std::vector<Point2> outline = outline_arg(b, 0);
+  const double h = b.positive(1);
+  std::vector<std::vector<Point2>> holes;
+  std::size_t faces = outline.size() + 2;
+  const Value& hole_list = b.value(2);
+  for (std::size_t k = 0; k < sequence_size(hole_list); ++k) {
+    const Value hole = sequence_item(hole_list, k);
+    if (!hole.is_sequence())
+      b.fail(2, "hole " + std::to_string(k) + " is " + kind_with_article(hole.kind()) +
+                    ", expected an outline (a list of vectors)");
+    CallArgs one(call.site(), {Arg{"", {}, hole, b.span(2)}}, call.budget());
+    static const std::vector<Param> hole_params = {required("holes", kList)};
+    holes.push_back(outline_arg(one.bind(hole_params), 0, "hole " + std::to_string(k) + ": "));
+    faces += holes.back().size();
+  }
+  return generated_solid(call, faces, [&] { return stdlib::prism(outline, holes, 0, h); });
+}
+
+Value cylinder_(CallArgs& call) {
+  static const std::vector<Param> params = {required("r", kNumber), required("h", kNumber),
+                                            optional("sides", kNumber, Value::number(32)), crease_param(30)};
+  const Bound b = call.bind(params);
+  const double r = b.positive(0), h = b.positive(1);
+  const int sides = b.whole(2, 3, kMaxCount);
+  const double deg = crease(b, 3);
+  return generated_solid(call, static_cast<std::size_t>(sides) + 2, [&] {
+    return stdlib::cylinder({0, 0, 0}, r, h, sides, deg);
+  });
+}
+
+Value sphere_(CallArgs& call) {
+  static const std::vector<Param> params = {required("r", kNumber),
+                                            optional("slices", kNumber, Value::number(32)),
+                                            optional("stacks", kNumber, Value::number(16)), crease_param(30)};
+  const Bound b = call.bind(params);
+  const double r = b.positive(0);
+  const int slices = b.whole(1, 3, kMaxCount), stacks = b.whole(2, 2, kMaxCount);
+  const double deg = crease(b, 3);
+  return generated_solid(call, static_cast<std::size_t>(slices) * static_cast<std::size_t>(stacks), [&] {
+    return stdlib::sphere({0, 0, 0}, r, slices, stacks, deg);
+  });
+}
+
+Value torus_(CallArgs& call) {
+  static const std::vector<Param> params = {required("R", kNumber), required("r", kNumber),
+                                            optional("major", kNumber, Value::number(48)),
+                                            optional("minor", kNumber, Value::number(24)), crease_param(30)};
+  const Bound b = call.bind(params);
+  const double big = b.positive(0), small = b.positive(1);
+  if (!(small < big)) b.fail(1, "must be below R (" + format_number(big) + "), got " + format_number(small));
+  const int major = b.whole(2, 3, kMaxCount), minor = b.whole(3, 3, kMaxCount);
+  const double deg = crease(b, 4);
+  return generated_solid(call, static_cast<std::size_t>(major) * static_cast<std::size_t>(minor), [&] {
+    return stdlib::torus({0, 0, 0}, big, small, major, minor, deg);
+  });
+}
+
+Value stairs_(CallArgs& call) {
+  static const std::vector<Param> params = {required("steps", kNumber), required("width", kNumber),
+                                            required("rise", kNumber), required("run", kNumber)};
+  const Bound b = call.bind(params);
+  const int steps = b.whole(0, 1, kMaxCount / 2);
+  const double width = b.positive(1), rise = b.positive(2), run = b.positive(3);
+  return generated_solid(call, 2 * static_cast<std::size_t>(steps) + 4,
+                         [&] { return stdlib::stairs(steps, width, rise, run); });
+}
+
+// lblock(size, upright, foot): the L-shaped prism of stdlib::l_block, corner at the origin.
+Value lblock_(CallArgs& call) {
+  static const std::vector<Param> params = {required("size", kVector), required("upright", kNumber),
+                                            required("foot", kNumber)};
+  const Bound b = call.bind(params);
+  const Vector3 size = b.vector(0);
+  if (!(size.x > 0 && size.y > 0 && size.z > 0)) b.fail(0, "must be positive on every axis");
+  const double upright = b.positive(1), foot = b.positive(2);
+  if (!(upright < size.x)) b.fail(1, "must be below size.x (" + format_number(size.x) + ")");
+  if (!(foot < size.z)) b.fail(2, "must be below size.z (" + format_number(size.z) + ")");
+  return generated_solid(call, 8, [&] { return stdlib::l_block({0, 0, 0}, size, upright, foot); });
+}
+
+// The registration table of the solid generators.
+const BuiltinEntry kSolidBuiltins[] = {
+    {"box", "box(sx, sy, sz) | box(min: p, max: q) | box(size: v, center: p)", box_},
+    {"cube", "cube(s)", cube_},
+    {"prism", "prism(outline, h, holes: [])", prism_},
+    {"cylinder", "cylinder(r, h, sides: 32, crease: 30)", cylinder_},
+    {"sphere", "sphere(r, slices: 32, stacks: 16, crease: 30)", sphere_},
+    {"torus", "torus(R, r, major: 48, minor: 24, crease: 30)", torus_},
+    {"stairs", "stairs(steps, width, rise, run)", stairs_},
+    {"lblock", "lblock(size, upright, foot)", lblock_},
+};
+
+}  // namespace
+
+void register_solid_builtins(BuiltinTable& table) { table.add_all(kSolidBuiltins); }
+
+}  // namespace hlr::runtime

@@ -1,0 +1,39 @@
+// Internals shared by the evaluator's source files.
+#pragma once
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "lang/source.hpp"
+#include "runtime/eval_error.hpp"
+#include "runtime/limits.hpp"
+
+namespace hlr::runtime {
+
+// Counts the evaluator's native recursion; past kMaxEvalDepth an error, never a stack overflow.
+class DepthGuard {
+ public:
+  DepthGuard(std::size_t& depth, const lang::SourceSpan& span) : depth_(depth) {
+    if (++depth_ > kMaxEvalDepth) {
+      --depth_;
+      fail(span, limit_message("nested evaluations", kMaxEvalDepth),
+           "simplify the nesting of calls and blocks");
+    }
+  }
+  ~DepthGuard() { --depth_; }
+  DepthGuard(const DepthGuard&) = delete;
+  DepthGuard& operator=(const DepthGuard&) = delete;
+
+ private:
+  std::size_t& depth_;
+};
+
+// "did you mean 'box'?" for the closest candidate within a small edit distance, else "".
+std::string did_you_mean(const std::string& name, const std::vector<std::string>& candidates);
+
+// A note pointing at `span`, appended to the error's first diagnostic while there are few notes (a deep
+// recursion would otherwise list every call).
+void add_note(EvalError& error, const lang::SourceSpan& span, const std::string& message);
+
+}  // namespace hlr::runtime

@@ -1,0 +1,136 @@
+// Settings statements (animate, output, paper, style) and include. Each setting may be given once per
+// evaluation; a second one is an error pointing at the first, so two files cannot silently disagree.
+#include <cmath>
+#include <filesystem>
+
+#include "runtime/eval_detail.hpp"
+#include "runtime/evaluator.hpp"
+#include "runtime/format_value.hpp"
+
+namespace hlr::runtime {
+
+namespace {
+
+[[noreturn]] void already_set(const lang::SourceSpan& span, const std::string& what,
+                              const lang::SourceSpan& first) {
+  lang::Diagnostic d;
+  d.span = span;
+  d.message = "'" + what + "' is already set";
+  d.hint = "keep one '" + what + "' statement";
+  d.notes.push_back({first, "it was set here"});
+  throw EvalError(std::move(d));
+}
+
+std::string paper_list() {
+  std::string out;
+  for (const std::string_view name : paper_names()) out += (out.empty() ? "" : ", ") + std::string(name);
+  return out;
+}
+
+}  // namespace
+
+double Evaluator::eval_number(const lang::Expr& expr, const ScopePtr& scope, const std::string& what) {
+  const Value v = eval(expr, scope);
+  if (!v.is(ValueKind::Number))
+    fail(expr.span, what + " must be a number, got " + kind_with_article(v.kind()));
+  return v.as_number();
+}
+
+void Evaluator::exec_animate(const lang::AnimateStmt& animate, const lang::Stmt& stmt,
+                             const ScopePtr& scope) {
+  if (out_.animation) already_set(stmt.span, "animate", out_.animation->span);
+  const double frames = eval_number(*animate.frames, scope, "the frame count");
+  if (frames > static_cast<double>(kMaxFrames))
+    fail(animate.frames->span, limit_message("frames", kMaxFrames) + ": got " + format_number(frames),
+         "split a long sequence into several scripts or render at a lower frame rate");
+  if (!(frames >= 1) || std::floor(frames) != frames)
+    fail(animate.frames->span, "the frame count must be a whole number from 1 to " +
+                                   std::to_string(kMaxFrames) + ", got " + format_number(frames));
+  AnimationSetting a;
+  a.frames = static_cast<int>(frames);
+  a.span = stmt.span;
+  if (animate.fps) {
+    a.fps = eval_number(*animate.fps, scope, "fps");
+    if (!(a.fps > 0)) fail(animate.fps->span, "fps must be positive, got " + format_number(a.fps));
+  }
+  out_.animation = a;
+}
+
+void Evaluator::exec_output(const lang::OutputStmt& output, const lang::Stmt& stmt, const ScopePtr& scope) {
+  if (out_.output) already_set(stmt.span, "output", out_.output->span);
+  const Value name = eval(*output.pattern, scope);
+  if (!name.is(ValueKind::String))
+    fail(output.pattern->span, "the output name must be a string, got " + kind_with_article(name.kind()));
+  if (name.as_string().empty()) fail(output.pattern->span, "the output name is empty");
+  OutputSetting o;
+  o.name = name.as_string();
+  const auto* lit = std::get_if<lang::StringLit>(&output.pattern->node);
+  o.interpolated = lit && !lit->is_plain();
+  o.span = output.pattern->span;
+  out_.output = o;
+  if (output.paper.size) set_paper(output.paper, stmt);
+}
+
+void Evaluator::set_paper(const lang::PaperSpec& paper, const lang::Stmt& stmt) {
+  if (out_.paper) already_set(stmt.span, "paper", out_.paper->span);
+  if (!paper.size) return;
+  // Landscape unless the script says portrait: drawings are mostly wider than tall, and it is the
+  // devices' default.
+  const bool landscape = paper.orientation != lang::Orientation::Portrait;
+  const std::optional<Paper> found = paper_by_name(paper.size->text, landscape);
+  if (!found)
+    fail(paper.size->span, "unknown paper size '" + paper.size->text + "'", "use one of " + paper_list());
+  out_.paper = PaperSetting{paper.size->text, *found, stmt.span};
+}
+
+void Evaluator::exec_style(const lang::StyleStmt& style, const lang::Stmt& stmt) {
+  if (style.property.text != "hidden")
+    fail(style.property.span, "unknown style '" + style.property.text + "'",
+         "the style is: style hidden dashed|off");
+  if (out_.hidden_span) already_set(stmt.span, "style hidden", *out_.hidden_span);
+  if (style.value.text != "dashed" && style.value.text != "off")
+    fail(style.value.span, "style hidden takes 'dashed' or 'off', got '" + style.value.text + "'");
+  out_.hidden = style.value.text == "dashed";
+  out_.hidden_span = stmt.span;
+}
+
+void Evaluator::exec_include(const lang::IncludeStmt& include, const ScopePtr& scope) {
+  namespace fs = std::filesystem;
+  const SourceEntry* from = sources_.entry(include.path_span.file);
+  const fs::path base = from ? from->path.parent_path() : fs::current_path();
+  const fs::path shown_base = from ? fs::path(from->source->name()).parent_path() : fs::path();
+  const fs::path target = fs::path(include.path).is_absolute() ? fs::path(include.path) : base / include.path;
+  const std::string shown = fs::path(include.path).is_absolute()
+                                ? include.path
+                                : (shown_base / include.path).lexically_normal().string();
+  if (include.path.empty()) fail(include.path_span, "the include path is empty");
+
+  std::string error;
+  const SourceEntry* entry = sources_.load(target, shown, error);
+  if (!entry) {
+    lang::Diagnostic d;
+    d.span = include.path_span;
+    d.message = error;
+    d.hint =
+        "include paths are relative to the including file ('" + (from ? from->source->name() : "") + "')";
+    throw EvalError(std::move(d), ErrorKind::Input);
+  }
+  if (!entry->script) throw EvalError(entry->diagnostics, ErrorKind::Script, "syntax errors in " + shown);
+  for (const lang::FileId id : include_stack_)
+    if (id == entry->id) {
+      std::string chain;
+      for (const lang::FileId f : include_stack_) chain += sources_.file(f)->name() + " → ";
+      fail(include.path_span, "include cycle: " + chain + shown,
+           "a file must not include itself, even indirectly");
+    }
+  if (included_.count(entry->id)) return;  // each file once per evaluation
+  if (include_stack_.size() >= kMaxIncludeDepth)
+    fail(include.path_span, limit_message("nested includes", kMaxIncludeDepth));
+  include_stack_.push_back(entry->id);
+  included_.insert(entry->id);
+  // The included statements run in the including scope, as if written in place.
+  run_statements(entry->script->statements, scope);
+  include_stack_.pop_back();
+}
+
+}  // namespace hlr::runtime

@@ -1,0 +1,98 @@
+// The tree-walking evaluator: runs a parsed script once, for one frame, and fills a FrameScene.
+//   statements  evaluator.cpp (let def return for if draw camera), eval_settings.cpp (animate output
+//               paper style include), eval_solid.cpp (solid)
+//   expressions eval_expr.cpp, operators.cpp; calls eval_call.cpp
+// Scopes: builtins (looked up last) ← frame globals (frame, t, time) ← the script's top level ← blocks.
+// Every error is an EvalError at a span; the evaluator never prints or exits.
+#pragma once
+
+#include <cstddef>
+#include <memory>
+#include <set>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include "lang/ast.hpp"
+#include "runtime/arguments.hpp"
+#include "runtime/budget.hpp"
+#include "runtime/frame_scene.hpp"
+#include "runtime/function.hpp"
+#include "runtime/scope.hpp"
+#include "runtime/source_table.hpp"
+#include "runtime/value.hpp"
+
+namespace hlr::runtime {
+
+class Evaluator {
+ public:
+  Evaluator(SourceTable& sources, FrameScene& out);
+  ~Evaluator();  // clears the scopes closures point into, breaking their reference cycles
+  Evaluator(const Evaluator&) = delete;
+  Evaluator& operator=(const Evaluator&) = delete;
+
+  // Runs a parsed file at the top level (the file must have parsed without errors).
+  void run(const SourceEntry& file);
+  // Evaluates one expression in the top-level scope (tests, the REPL).
+  Value evaluate(const lang::Expr& expr);
+  // A top-level name's value after run(), or nullptr.
+  const Value* global(const std::string& name) const;
+
+  const Budget& budget() const { return budget_; }
+
+ private:
+  enum class Flow { Next, Return };
+
+  // statements
+  Flow run_statements(const std::vector<lang::Stmt>& statements, const ScopePtr& scope);
+  Flow run_block(const lang::Block& block, const ScopePtr& parent);
+  Flow exec(const lang::Stmt& stmt, const ScopePtr& scope);
+  void exec_def(const lang::DefStmt& def, const ScopePtr& scope);
+  Flow exec_for(const lang::ForStmt& loop, const ScopePtr& scope);
+  Flow exec_if(const lang::IfStmt& branch, const ScopePtr& scope);
+  void exec_draw(const lang::DrawStmt& draw, const ScopePtr& scope);
+  void exec_camera(const lang::CameraStmt& camera, const lang::Stmt& stmt, const ScopePtr& scope);
+  void exec_solid(const lang::SolidStmt& solid, const ScopePtr& scope);  // eval_solid.cpp
+  // settings (eval_settings.cpp)
+  void exec_animate(const lang::AnimateStmt& animate, const lang::Stmt& stmt, const ScopePtr& scope);
+  void exec_output(const lang::OutputStmt& output, const lang::Stmt& stmt, const ScopePtr& scope);
+  void set_paper(const lang::PaperSpec& paper, const lang::Stmt& stmt);
+  void exec_style(const lang::StyleStmt& style, const lang::Stmt& stmt);
+  void exec_include(const lang::IncludeStmt& include, const ScopePtr& scope);
+
+  // expressions (eval_expr.cpp)
+  Value eval(const lang::Expr& expr, const ScopePtr& scope);
+  Value eval_name(const lang::NameRef& ref, const lang::Expr& expr, const ScopePtr& scope);
+  Value eval_string(const lang::StringLit& lit, const ScopePtr& scope);
+  Value eval_binary(const lang::BinaryExpr& bin, const lang::Expr& expr, const ScopePtr& scope);
+  Value eval_member(const lang::MemberExpr& member, const ScopePtr& scope);
+  Value eval_index(const lang::IndexExpr& index, const ScopePtr& scope);
+  // a value that must be a number / bool / transform, else an error naming `what`
+  double eval_number(const lang::Expr& expr, const ScopePtr& scope, const std::string& what);
+
+  // calls (eval_call.cpp)
+  Value eval_call(const lang::CallExpr& call, const lang::Expr& expr, const ScopePtr& scope);
+  Value call_user(const Function& function, const UserFunction& user, const std::vector<Arg>& args,
+                  const lang::SourceSpan& call_span);
+  const std::string& signature_of(const Function& function, const lang::DefStmt& def);
+
+  // Binds a new name; defining a name twice in one scope is an error.
+  void define(const ScopePtr& scope, const lang::Name& name, Value value);
+  std::string source_text(const lang::SourceSpan& span) const;
+
+  SourceTable& sources_;
+  FrameScene& out_;
+  Budget budget_;
+  ScopePtr globals_;                              // the script's top level (its parent binds frame, t, time)
+  std::vector<std::weak_ptr<Scope>> def_scopes_;  // scopes a `def` ran in (see ~Evaluator)
+  std::size_t def_scopes_pruned_at_ = 64;
+  std::size_t call_depth_ = 0;
+  std::size_t eval_depth_ = 0;  // native recursion, bounded by kMaxEvalDepth
+  Value return_value_;
+  std::vector<lang::FileId> include_stack_;
+  std::set<lang::FileId> included_;
+  std::unordered_map<std::string, int> drawn_names_;  // name → times drawn, for "box#2"
+  std::unordered_map<const lang::DefStmt*, std::string> signatures_;
+};
+
+}  // namespace hlr::runtime

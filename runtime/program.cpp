@@ -1,0 +1,51 @@
+#include "runtime/program.hpp"
+
+#include <chrono>
+
+#include "runtime/big_stack.hpp"
+#include "runtime/evaluator.hpp"
+
+namespace hlr::runtime {
+
+Program::Program(std::unique_ptr<SourceTable> sources, const SourceEntry* main)
+    : sources_(std::move(sources)), main_(main) {}
+
+std::unique_ptr<Program> Program::load(const std::filesystem::path& path, const std::string& display_name) {
+  auto sources = std::make_unique<SourceTable>();
+  std::string error;
+  const SourceEntry* main = sources->load(path, display_name, error);
+  if (!main) throw EvalError({}, ErrorKind::Input, error);
+  return std::unique_ptr<Program>(new Program(std::move(sources), main));
+}
+
+std::unique_ptr<Program> Program::from_text(const std::string& display_name, const std::string& text,
+                                            const std::filesystem::path& path) {
+  auto sources = std::make_unique<SourceTable>();
+  const SourceEntry* main = sources->add_text(display_name, text, path);
+  return std::unique_ptr<Program>(new Program(std::move(sources), main));
+}
+
+FrameScene Program::evaluate(const FrameTime& time) const {
+  if (!parsed())
+    throw EvalError(main_->diagnostics, ErrorKind::Script,
+                    std::to_string(main_->diagnostics.size()) + " syntax errors in " + main_->source->name());
+  FrameScene scene;
+  scene.time = time;
+  const auto start = std::chrono::steady_clock::now();
+  run_on_big_stack([&] {
+    Evaluator evaluator(*sources_, scene);
+    evaluator.run(*main_);
+  });
+  scene.evaluate_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return scene;
+}
+
+FrameTime frame_time(int frame, int frame_count, double fps) {
+  FrameTime t;
+  t.frame = frame;
+  t.t = frame_count > 1 ? static_cast<double>(frame) / (frame_count - 1) : 0;
+  t.time = static_cast<double>(frame) / fps;
+  return t;
+}
+
+}  // namespace hlr::runtime

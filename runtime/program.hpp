@@ -1,0 +1,46 @@
+// A script ready to run: its files (main script and includes) and the entry point that evaluates it for
+// one frame. Parse once, evaluate per frame; evaluate() is const and thread-safe, so frames can be
+// evaluated in parallel.
+#pragma once
+
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "runtime/frame_scene.hpp"
+#include "runtime/source_table.hpp"
+
+namespace hlr::runtime {
+
+class Program {
+ public:
+  // Reads and parses the script. Throws EvalError of kind Input (no diagnostics, the reason in what())
+  // when it cannot be read. A script with syntax errors loads, with syntax_errors() set.
+  static std::unique_ptr<Program> load(const std::filesystem::path& path, const std::string& display_name);
+  // A script given as text; includes resolve against `path`'s directory.
+  static std::unique_ptr<Program> from_text(const std::string& display_name, const std::string& text,
+                                            const std::filesystem::path& path = "script.hls");
+
+  bool parsed() const { return main_->script.has_value(); }
+  const std::vector<lang::Diagnostic>& syntax_errors() const { return main_->diagnostics; }
+
+  // Evaluates the whole script with `frame`, `t` and `time` bound. Throws EvalError (also for a script
+  // with syntax errors). Runs on a thread with a large stack (big_stack.hpp), so no script can overflow
+  // the caller's.
+  FrameScene evaluate(const FrameTime& time) const;
+
+  const SourceTable& sources() const { return *sources_; }
+  const SourceEntry& main() const { return *main_; }
+
+ private:
+  explicit Program(std::unique_ptr<SourceTable> sources, const SourceEntry* main);
+
+  std::unique_ptr<SourceTable> sources_;  // grows as includes are loaded (internally synchronised)
+  const SourceEntry* main_;
+};
+
+// `frame`, `t` = frame/(N − 1) (0 for one frame) and `time` = frame/fps.
+FrameTime frame_time(int frame, int frame_count, double fps);
+
+}  // namespace hlr::runtime

@@ -1,0 +1,123 @@
+// The command line in-process (run_cli): options, usage errors (64), script errors (65), unreadable
+// files (66), check, and that nothing is written on failure. tests/e2e/ runs the built binary.
+#include "runtime/cli.hpp"
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "tests/runtime/runtime_test_support.hpp"
+
+namespace hlr::runtime {
+namespace {
+
+struct Result {
+  int code;
+  std::string out, err;
+};
+
+Result run(std::vector<std::string> args) {
+  args.insert(args.begin(), "hlrscript");
+  std::vector<const char*> argv;
+  for (const std::string& a : args) argv.push_back(a.c_str());
+  std::ostringstream out, err;
+  const int code = run_cli(static_cast<int>(argv.size()), argv.data(), out, err);
+  return {code, out.str(), err.str()};
+}
+
+const char* kScene =
+    "animate frames 3\n"
+    "draw cube(2) at rotate(z: 30 * frame)\n"
+    "camera main = lookat(eye: (6, -8, 5), target: (0, 0, 0))\n";
+
+TEST(Cli, HelpAndVersion) {
+  const Result help = run({"--help"});
+  EXPECT_EQ(help.code, 0);
+  EXPECT_NE(help.out.find("examples:"), std::string::npos);
+  EXPECT_NE(help.out.find("--shard"), std::string::npos);
+  const Result version = run({"--version"});
+  EXPECT_EQ(version.code, 0);
+  EXPECT_EQ(version.out, "hlrscript 0.1.0\n");
+}
+
+TEST(Cli, UsageErrors) {
+  EXPECT_EQ(run({}).code, 64);
+  EXPECT_EQ(run({"--bogus", "a.hls"}).code, 64);
+  EXPECT_EQ(run({"a.hls", "b.hls"}).code, 64);
+  EXPECT_EQ(run({"a.hls", "--frames", "x"}).code, 64);
+  EXPECT_EQ(run({"a.hls", "--shard", "4/3"}).code, 64);
+  EXPECT_EQ(run({"a.hls", "--hidden", "dotted"}).code, 64);
+  EXPECT_EQ(run({"a.hls", "--jobs", "-2"}).code, 64);
+  EXPECT_EQ(run({"check"}).code, 64);
+  const Result r = run({"a.hls", "--frames", "9-2"});
+  EXPECT_NE(r.err.find("hlrscript: error: --frames 9-2: expected A-B"), std::string::npos) << r.err;
+}
+
+TEST(Cli, RendersChecksAndRefuses) {
+  const test::TempDir dir("runtime-cli");
+  const std::string script = dir.write("scene.hls", kScene).string();
+  const std::string pdf = (dir.path() / "out.pdf").string();
+
+  const Result check = run({"check", script});
+  EXPECT_EQ(check.code, 0) << check.err;
+  EXPECT_NE(check.out.find(": ok: 3 frames evaluated"), std::string::npos) << check.out;
+  EXPECT_FALSE(std::filesystem::exists(pdf));
+
+  const Result ok = run({script, "-o", pdf, "--jobs", "2", "--stats"});
+  EXPECT_EQ(ok.code, 0) << ok.err;
+  EXPECT_TRUE(std::filesystem::exists(pdf));
+  EXPECT_NE(ok.out.find("wrote " + pdf + ": 3 frames"), std::string::npos) << ok.out;
+  EXPECT_NE(ok.err.find("frame 2: camera main, 1 objects, 6 faces"), std::string::npos) << ok.err;
+
+  const Result per_frame = run({script, "-o", (dir.path() / "f-{frame:02}.pdf").string(), "--frames", "1-2"});
+  EXPECT_EQ(per_frame.code, 0) << per_frame.err;
+  EXPECT_FALSE(std::filesystem::exists(dir.path() / "f-00.pdf"));
+  EXPECT_TRUE(std::filesystem::exists(dir.path() / "f-01.pdf"));
+  EXPECT_TRUE(std::filesystem::exists(dir.path() / "f-02.pdf"));
+
+  EXPECT_EQ(run({script, "-o", (dir.path() / "out.svgz").string()}).code, 64);
+  EXPECT_EQ(run({script, "-o", script}).code, 64);
+  EXPECT_EQ(run({script, "--camera", "nope", "-o", pdf}).code, 64);
+  EXPECT_EQ(run({script, "--frames", "5-9", "-o", pdf}).code, 64);
+  EXPECT_EQ(run({(dir.path() / "missing.hls").string()}).code, 66);
+}
+
+TEST(Cli, WritesJsonFrames) {
+  const test::TempDir dir("runtime-cli-json");
+  const std::string script = dir.write("scene.hls", kScene).string();
+  const std::string out = (dir.path() / "lines.json").string();
+  const Result r = run({script, "-o", out, "--frames", "1-2"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  std::ifstream in(out);
+  const nlohmann::json json = nlohmann::json::parse(in);
+  EXPECT_EQ(json["format"], "hlrscript.lines/1");
+  ASSERT_EQ(json["frames"].size(), 2U);
+  EXPECT_EQ(json["frames"][0]["frame"], 1);
+  EXPECT_EQ(json["frames"][1]["frame"], 2);
+  EXPECT_GT(json["frames"][0]["segments"].size(), 0U);
+  EXPECT_EQ(json["frames"][0]["segments"][0]["object"], "cube");
+}
+
+TEST(Cli, ABrokenScriptWritesNothing) {
+  const test::TempDir dir("runtime-cli-broken");
+  const std::string script =
+      dir.write("broken.hls", "animate frames 4\ndraw cube(2)\nlet x = 1 / (frame - 3)\ncamera c = orbit()\n")
+          .string();
+  const std::string pdf = (dir.path() / "out.pdf").string();
+  const Result r = run({script, "-o", pdf});
+  EXPECT_EQ(r.code, 65);
+  EXPECT_NE(r.err.find("broken.hls:3:14: error: division by zero (in frame 3)"), std::string::npos) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(pdf));
+  const Result syntax = run({dir.write("syntax.hls", "draw (\n").string(), "-o", pdf});
+  EXPECT_EQ(syntax.code, 65);
+  EXPECT_NE(syntax.err.find("syntax.hls:"), std::string::npos);
+  const Result no_camera = run({dir.write("nocam.hls", "draw cube(1)\n").string(), "-o", pdf});
+  EXPECT_EQ(no_camera.code, 65);
+  EXPECT_NE(no_camera.err.find("declares no camera"), std::string::npos);
+  EXPECT_FALSE(std::filesystem::exists(pdf));
+}
+
+}  // namespace
+}  // namespace hlr::runtime

@@ -1,0 +1,105 @@
+// Helpers for the runtime suites: run a script's text, read a value, get the first error as
+// "line:col: message" (the form of tests/lang/diagnostics_test.cpp).
+#pragma once
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "runtime/eval_error.hpp"
+#include "runtime/evaluator.hpp"
+#include "runtime/format_value.hpp"
+#include "runtime/program.hpp"
+#include "runtime/source_table.hpp"
+
+namespace hlr::runtime::test {
+
+inline std::string line_col(const lang::Diagnostic& d) {
+  return std::to_string(d.span.begin.line) + ":" + std::to_string(d.span.begin.column) + ": " + d.message;
+}
+
+// Frame `time` of `text`; a syntax or evaluation error fails the test and yields an empty scene.
+inline FrameScene run_ok(const std::string& text, FrameTime time = {}) {
+  const auto program = Program::from_text("test.hls", text);
+  try {
+    return program->evaluate(time);
+  } catch (const EvalError& e) {
+    std::string shown;
+    for (const auto& d : e.diagnostics) shown += format_diagnostic(d, program->sources());
+    ADD_FAILURE() << "unexpected error:\n" << shown << e.what();
+    return {};
+  }
+}
+
+// "line:col: message" of the first error, or "<no error>".
+inline std::string first_error(const std::string& text, FrameTime time = {}) {
+  const auto program = Program::from_text("test.hls", text);
+  try {
+    program->evaluate(time);
+  } catch (const EvalError& e) {
+    return e.diagnostics.empty() ? std::string(e.what()) : line_col(e.diagnostics.front());
+  }
+  return "<no error>";
+}
+
+// The printed diagnostics of the first error (file:line:col, source line, caret, hint, notes).
+inline std::string printed_error(const std::string& text) {
+  const auto program = Program::from_text("test.hls", text);
+  try {
+    program->evaluate({});
+  } catch (const EvalError& e) {
+    std::string shown;
+    for (const auto& d : e.diagnostics) shown += format_diagnostic(d, program->sources());
+    return shown;
+  }
+  return "<no error>";
+}
+
+// str() of `expr` evaluated after the statements of `prelude`, or "error: line:col: message".
+inline std::string value(const std::string& expr, const std::string& prelude = "") {
+  SourceTable table;
+  const SourceEntry* entry =
+      table.add_text("test.hls", prelude + "\nlet result__ = " + expr + "\n", "test.hls");
+  if (!entry->script) return "syntax error: " + line_col(entry->diagnostics.front());
+  FrameScene scene;
+  Evaluator evaluator(table, scene);
+  try {
+    evaluator.run(*entry);
+    return display(*evaluator.global("result__"), 1 << 20);
+  } catch (const EvalError& e) {
+    return "error: " + line_col(e.diagnostics.front());
+  }
+}
+
+// A fresh empty directory under the system's temporary directory (unique per process, since ctest runs
+// tests in parallel), removed by the destructor.
+class TempDir {
+ public:
+  explicit TempDir(const std::string& name)
+      : path_(std::filesystem::temp_directory_path() / ("hlr-" + name + "-" + std::to_string(::getpid()))) {
+    std::filesystem::remove_all(path_);
+    std::filesystem::create_directories(path_);
+  }
+  ~TempDir() {
+    std::error_code ec;
+    std::filesystem::remove_all(path_, ec);
+  }
+  TempDir(const TempDir&) = delete;
+  TempDir& operator=(const TempDir&) = delete;
+
+  const std::filesystem::path& path() const { return path_; }
+  std::filesystem::path write(const std::string& relative, const std::string& text) const {
+    const std::filesystem::path p = path_ / relative;
+    std::filesystem::create_directories(p.parent_path());
+    std::ofstream(p) << text;
+    return p;
+  }
+
+ private:
+  std::filesystem::path path_;
+};
+
+}  // namespace hlr::runtime::test
