@@ -5,6 +5,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <string>
+#include <vector>
 
 #include "lang/source.hpp"
 #include "runtime/eval_error.hpp"
@@ -35,6 +36,10 @@ class Budget {
     if (n > kMaxListItems) fail(span, limit_message("items in a list", kMaxListItems));
   }
 
+  // Warnings raised by built-ins (an imported mesh repaired); the evaluator reports them with its own.
+  void warn(lang::Diagnostic warning) { warnings_.push_back(std::move(warning)); }
+  std::vector<lang::Diagnostic> take_warnings() { return std::move(warnings_); }
+
   std::uint64_t steps() const { return steps_; }
   std::size_t faces_built() const { return built_; }
   std::size_t faces_drawn() const { return drawn_; }
@@ -43,6 +48,7 @@ class Budget {
   std::uint64_t steps_ = 0;
   std::size_t built_ = 0;
   std::size_t drawn_ = 0;
+  std::vector<lang::Diagnostic> warnings_;
 };
 
 }  // namespace hlr::runtime

@@ -47,7 +47,8 @@ void register_transform_builtins(BuiltinTable& table);  // builtins_transforms.c
 void register_solid_builtins(BuiltinTable& table);      // builtins_solids.cpp
 void register_shape_builtins(BuiltinTable& table);      // builtins_shapes.cpp: pyramid, platonic, cone, ...
 
-void register_camera_builtins(BuiltinTable& table);  // builtins_cameras.cpp
+void register_camera_builtins(BuiltinTable& table);
+void register_import_builtins(BuiltinTable& table);  // builtins_import.cpp: import  // builtins_cameras.cpp
 
 // ---- helpers shared by the modules ------------------------------------------------------------------
 

@@ -44,6 +44,7 @@ void Evaluator::run(const SourceEntry& file) {
   included_.insert(file.id);
   run_statements(file.script->statements, globals_);
   include_stack_.pop_back();
+  for (lang::Diagnostic& w : budget_.take_warnings()) out_.warnings.push_back(std::move(w));
   out_.steps = budget_.steps();
   out_.faces_built = budget_.faces_built();
 }
