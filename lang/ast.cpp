@@ -92,6 +92,13 @@ std::string paper_text(const PaperSpec& paper) {
   return out;
 }
 
+// " a k:v ..." for call arguments and solid options.
+std::string arguments_text(const std::vector<Argument>& args) {
+  std::string out;
+  for (const auto& arg : args) out += " " + (arg.label ? arg.label->text + ":" : "") + dump(*arg.value);
+  return out;
+}
+
 std::string item_text(const SolidItem& item) {
   return std::visit(
       Overloaded{
@@ -142,12 +149,7 @@ std::string dump(const Expr& expr) {
           [](const BinaryExpr& b) {
             return std::string("(") + to_string(b.op) + " " + dump(*b.lhs) + " " + dump(*b.rhs) + ")";
           },
-          [](const CallExpr& c) {
-            std::string out = "(call " + dump(*c.callee);
-            for (const auto& arg : c.args)
-              out += " " + (arg.label ? arg.label->text + ":" : "") + dump(*arg.value);
-            return out + ")";
-          },
+          [](const CallExpr& c) { return "(call " + dump(*c.callee) + arguments_text(c.args) + ")"; },
           [](const MemberExpr& m) { return "(. " + dump(*m.object) + " " + m.member.text + ")"; },
           [](const IndexExpr& i) { return "(index " + dump(*i.object) + " " + dump(*i.index) + ")"; },
       },
@@ -159,6 +161,7 @@ std::string dump(const Stmt& stmt) {
       Overloaded{
           [](const SolidStmt& s) {
             std::string out = "(solid " + s.name.text;
+            if (!s.options.empty()) out += " (options" + arguments_text(s.options) + ")";
             for (const auto& item : s.items) out += " " + item_text(item);
             return out + ")";
           },

@@ -143,8 +143,10 @@ struct Block {
 
 enum class Orientation { Unspecified, Landscape, Portrait };
 
+// solid NAME [(crease: 30, planarity: 0.003, ...)] { ITEMS }
 struct SolidStmt {
   Name name;
+  std::vector<Argument> options;  // as written, labels and spans kept; the runtime checks them
   std::vector<SolidItem> items;
 };
 struct LetStmt {

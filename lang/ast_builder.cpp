@@ -285,8 +285,9 @@ struct action<g::solid_stmt> {
   template <typename Input>
   static void apply(const Input& in, ParseState& s) {
     make_statement(span_of(in, s), s, [](auto it, auto end) {
-      SolidStmt solid{take<Name>(*it), {}};
-      for (++it; it != end; ++it) solid.items.push_back(take<SolidItem>(*it));
+      SolidStmt solid{take<Name>(*it), {}, {}};
+      for (++it; it != end && holds<Argument>(*it); ++it) solid.options.push_back(take<Argument>(*it));
+      for (; it != end; ++it) solid.items.push_back(take<SolidItem>(*it));
       return solid;
     });
   }

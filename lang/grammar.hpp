@@ -29,6 +29,8 @@
 //   postfix     f(x, k: v)  v.x  l[0]
 //   primary     number string true false (x, y, z) (e) [a, b] name
 //
+// Solids: `solid NAME [(OPTION: EXPR, ...)] { vertex ... face ... hole ... line ... }`.
+//
 // Reserved words (never names): solid let def return for in if else draw at camera animate output
 // paper style include then and or not true false. Words with meaning in one place only stay free
 // as names elsewhere: vertex face hole line (inside a solid), frames fps (after animate),
@@ -221,11 +223,20 @@ struct line_from : seq< vertex_id > {};
 struct line_to : seq< vertex_id > {};
 struct line_decl : seq< key_line, sp, must< line_from >, sp, must< line_to > > {};
 
+// Build options between the name and '{': `solid hull (crease: 30, planarity: 0.003) { ... }`. The list
+// is a call's argument list (the same `argument` rule, so positional values parse too and the runtime
+// reports them) with its own commit points and messages.
+struct solid_options_open : one< '(' > {};
+struct solid_option_next : seq< argument > {};
+struct solid_option_list : seq< argument, star< sp, one< ',' >, sp, must< solid_option_next > > > {};
+struct solid_options_close : one< ')' > {};
+struct solid_options : seq< solid_options_open, sp, opt< solid_option_list, sp >, must< solid_options_close > > {};
+
 struct solid_item : sor< vertex_decl, face_decl, line_decl > {};
 struct solid_name : name {};
 struct solid_open : one< '{' > {};
 struct solid_close : one< '}' > {};
-struct solid_stmt : seq< key_solid, sp, must< solid_name >, sp, must< solid_open >, sp, star< solid_item, sp >, must< solid_close > > {};
+struct solid_stmt : seq< key_solid, sp, must< solid_name >, sp, opt< solid_options, sp >, must< solid_open >, sp, star< solid_item, sp >, must< solid_close > > {};
 
 // ---- statements ---------------------------------------------------------------------------------
 

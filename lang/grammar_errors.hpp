@@ -73,6 +73,11 @@ HLR_ERROR(then_rhs, "expected a transform after 'then', as in 'rotate(z: 30) the
 // ---- solids ----
 HLR_ERROR(solid_name, "expected a name after 'solid', as in 'solid box { ... }'");
 HLR_ERROR(solid_open, "expected '{' after the solid's name");
+HLR_HINT(solid_open, "write 'solid box { ... }', or with options 'solid box (crease: 30) { ... }'");
+HLR_ERROR(solid_option_next, "expected an option after ',' in the solid's options, as in '(crease: 30, planarity: 0.003)'");
+HLR_HINT(solid_option_next, "a trailing ',' is not allowed");
+HLR_ERROR(solid_options_close, "expected ',' or ')' in the solid's options");
+HLR_HINT(solid_options_close, "options are 'name: value' pairs separated by ',', as in 'solid hull (crease: 30, planarity: 0.003) { ... }'");
 HLR_ERROR(solid_close, "expected 'vertex', 'face', 'line' or '}' in the solid");
 HLR_ERROR(vertex_decl_id, "expected a vertex id (a whole number or a name) after 'vertex', as in 'vertex 1 = (0, 0, 0)'");
 HLR_ERROR(vertex_eq, "expected '=' after the vertex id, as in 'vertex 1 = (0, 0, 0)'");
@@ -132,6 +137,7 @@ template <> inline constexpr char closes<group_close> = '(';
 template <> inline constexpr char closes<vector_close> = '(';
 template <> inline constexpr char closes<call_close> = '(';
 template <> inline constexpr char closes<params_close> = '(';
+template <> inline constexpr char closes<solid_options_close> = '(';
 template <> inline constexpr char closes<list_close> = '[';
 template <> inline constexpr char closes<index_close> = '[';
 template <> inline constexpr char closes<interp_close> = '{';
@@ -145,6 +151,7 @@ inline constexpr bool opens = false;
 template <> inline constexpr bool opens<paren_open> = true;
 template <> inline constexpr bool opens<call_open> = true;
 template <> inline constexpr bool opens<params_open> = true;
+template <> inline constexpr bool opens<solid_options_open> = true;
 template <> inline constexpr bool opens<list_open> = true;
 template <> inline constexpr bool opens<index_open> = true;
 template <> inline constexpr bool opens<interp_open> = true;

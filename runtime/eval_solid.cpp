@@ -1,13 +1,16 @@
-// solid NAME { vertex ... face ... line ... }: the items go to hlr::SolidBuilder, each tagged with its
-// index so that every builder diagnostic (non-planar face, unknown vertex, ...) points at its item.
-// Errors fail the statement, all of them reported together; warnings (a reoriented face) are kept
-// with the frame and printed once.
+// solid NAME (OPTIONS) { vertex ... face ... line ... }: the options become hlr::SolidBuildOptions, the
+// items go to hlr::SolidBuilder, each tagged with its index so that every builder diagnostic
+// (non-planar face, unknown vertex, ...) points at its item. Errors fail the statement, all of them
+// reported together; warnings (a reoriented face) are kept with the frame and printed once.
 #include <algorithm>
+#include <array>
 #include <map>
+#include <string_view>
 
 #include "core/solid/solid_builder.hpp"
 #include "runtime/eval_detail.hpp"
 #include "runtime/evaluator.hpp"
+#include "runtime/format_value.hpp"
 
 namespace hlr::runtime {
 
@@ -42,10 +45,70 @@ bool revisits_a_vertex(const std::vector<std::string>& ids) {
   return std::any_of(seen.begin(), seen.end(), [](const auto& e) { return e.second > 1; });
 }
 
+// ---- options: solid NAME (crease: 30, planarity: 0.003, crossing_holes: true, fix_winding: false) ----
+
+constexpr std::array<std::string_view, 4> kOptionNames = {"crease", "planarity", "crossing_holes",
+                                                          "fix_winding"};
+constexpr double kMaxPlanarity = 0.05;  // 5% of a face's size off its plane is no longer a plane
+constexpr const char* kOptionsHint =
+    "the options are crease: degrees from 0 to 180, planarity: a fraction of the face's size above 0 "
+    "and at most 0.05, crossing_holes: true or false, fix_winding: true or false";
+
+// The build options a solid statement asks for; `eval` evaluates an option's expression. Every
+// mistake is an error at the option, with the list of options as the hint.
+template <typename Eval>
+SolidBuildOptions build_options(const lang::SolidStmt& solid, Eval&& eval) {
+  SolidBuildOptions options;
+  const std::string who = "solid '" + solid.name.text + "': ";
+  std::vector<std::string_view> seen;
+  for (const lang::Argument& option : solid.options) {
+    if (!option.label) fail(option.span, who + "an option needs a name, as in 'crease: 30'", kOptionsHint);
+    const std::string& name = option.label->text;
+    if (std::find(kOptionNames.begin(), kOptionNames.end(), name) == kOptionNames.end()) {
+      const std::string guess =
+          did_you_mean(name, std::vector<std::string>(kOptionNames.begin(), kOptionNames.end()));
+      fail(option.span, who + "unknown option '" + name + "'",
+           guess.empty() ? kOptionsHint : guess + " " + kOptionsHint);
+    }
+    if (std::find(seen.begin(), seen.end(), name) != seen.end())
+      fail(option.span, who + "option '" + name + "' is given twice", kOptionsHint);
+    seen.push_back(name);
+
+    const Value value = eval(*option.value);
+    const bool flag = name == "crossing_holes" || name == "fix_winding";
+    const ValueKind wanted = flag ? ValueKind::Bool : ValueKind::Number;
+    if (!value.is(wanted)) {
+      fail(option.span,
+           who + "option '" + name + "' must be " + (flag ? "true or false" : "a number") + ", got " +
+               kind_with_article(value.kind()),
+           kOptionsHint);
+    }
+    auto out_of_range = [&](const std::string& range) {
+      fail(option.span,
+           who + "option '" + name + "' must be " + range + " (got " + format_number(value.as_number()) + ")",
+           kOptionsHint);
+    };
+    if (name == "crease") {
+      options.crease_angle_deg = value.as_number();
+      if (!(options.crease_angle_deg >= 0 && options.crease_angle_deg <= 180))
+        out_of_range("from 0 to 180 degrees");
+    } else if (name == "planarity") {
+      options.planarity_tolerance = value.as_number();
+      if (!(options.planarity_tolerance > 0 && options.planarity_tolerance <= kMaxPlanarity))
+        out_of_range("above 0 and at most 0.05");
+    } else if (name == "crossing_holes") {
+      options.allow_crossing_holes = value.as_bool();
+    } else {
+      options.fix_winding = value.as_bool();
+    }
+  }
+  return options;
+}
+
 }  // namespace
 
 void Evaluator::exec_solid(const lang::SolidStmt& solid, const ScopePtr& scope) {
-  SolidBuilder builder;
+  SolidBuilder builder(build_options(solid, [&](const lang::Expr& e) { return eval(e, scope); }));
   std::vector<lang::SourceSpan> item_spans;  // builder tag → span
   std::size_t faces = 0;
   for (const lang::SolidItem& item : solid.items) {

@@ -57,6 +57,13 @@ const Case kCases[] = {
   {"solid a vertex 1 = (0, 0, 0)", "1:9: expected '{' after the solid's name"},
   {"solid a {\n  vertex 1 = (0, 0, 0) draw a\n}\n", "2:24: expected 'vertex', 'face', 'line' or '}' in the solid (to close '{' at line 1)"},
   {"vertex 1 = (0, 0, 0)", "1:1: 'vertex' belongs inside a solid"},
+  // solid options
+  {"solid a (crease: 30 {\n}\n", "1:21: expected ',' or ')' in the solid's options (to close '(' at line 1)"},
+  {"solid a (crease: 30\n  vertex 1 = (0, 0, 0)\n}\n", "1:20: expected ',' or ')' in the solid's options (to close '(' at line 1)"},
+  {"solid a (crease 30) {}", "1:17: expected ',' or ')' in the solid's options (to close '(' at line 1)"},
+  {"solid a (crease: 30,) {}", "1:21: expected an option after ',' in the solid's options, as in '(crease: 30, planarity: 0.003)'"},
+  {"solid a (crease:) {}", "1:17: expected a value after the argument name and ':', as in 'fov: 40'"},
+  {"solid a (crease: 30) vertex 1 = (0, 0, 0)", "1:22: expected '{' after the solid's name"},
   // numbers, strings, characters
   {"let x = 1.2.3", "1:12: malformed number: a number has at most one decimal point"},
   {"let x = 2x", "1:10: malformed number: a letter follows the digits"},
@@ -184,6 +191,36 @@ TEST(Diagnostics, RecoversAfterMissingBraceOfSolid) {
                 "2:23: expected 'vertex', 'face', 'line' or '}' in the solid (to close '{' at line 1)",
                 "4:10: expected '=' after the camera name, as in 'camera main = lookat(...)'",
             }));
+}
+
+TEST(Diagnostics, UnclosedSolidOptions) {
+  const ParseResult result =
+      parse("solid hull (planarity: 0.003, crossing_holes: true {\n  vertex 1 = (0, 0, 0)\n}\n", "s.hls");
+  ASSERT_EQ(result.diagnostics.size(), 1U);
+  EXPECT_EQ(format(result.diagnostics[0], *result.source),
+            "s.hls:1:52: error: expected ',' or ')' in the solid's options (to close '(' at line 1)\n"
+            "   1 | solid hull (planarity: 0.003, crossing_holes: true {\n"
+            "     |                                                    ^\n"
+            "hint: options are 'name: value' pairs separated by ',', as in 'solid hull (crease: 30, "
+            "planarity: 0.003) { ... }'\n"
+            "s.hls:1:12: note: '(' opened here\n"
+            "   1 | solid hull (planarity: 0.003, crossing_holes: true {\n"
+            "     |            ^\n");
+}
+
+TEST(Diagnostics, RecoversAfterBrokenSolidOptions) {
+  // The solid's body is skipped as a whole; the next statement is parsed.
+  EXPECT_EQ(errors("solid a (crease: 30 {\n  vertex 1 = (0, 0, 0)\n}\nlet = 3\n"),
+            (std::vector<std::string>{
+                "1:21: expected ',' or ')' in the solid's options (to close '(' at line 1)",
+                "4:5: expected a name after 'let', as in 'let x = 1'",
+            }));
+  EXPECT_EQ(
+      errors("solid a (crease: 30,) {\n}\nsolid b (x: 1 y: 2) {\n}\n"),
+      (std::vector<std::string>{
+          "1:21: expected an option after ',' in the solid's options, as in '(crease: 30, planarity: 0.003)'",
+          "3:15: expected ',' or ')' in the solid's options (to close '(' at line 3)",
+      }));
 }
 
 TEST(Diagnostics, RecoversInsideOneLineBlocks) {

@@ -188,6 +188,24 @@ TEST(Grammar, SolidStatement) {
                              {"solid a { draw x }", G, "expected 'vertex', 'face', 'line' or '}'"}});
 }
 
+TEST(Grammar, SolidOptions) {
+  check_rows<g::solid_stmt>(
+      {{"solid a (crease: 30) {}", S},
+       {"solid a(crease:30){}", S},
+       {"solid a (crease: 30, planarity: 0.003,\n crossing_holes: true, fix_winding: false) {}", S},
+       {"solid a () {}", S},
+       {"solid a (30) {}", S},  // parses: the runtime says options need names
+       {"solid a (crease: 2 * c) {}", S},
+       {"solid a (crease: 30 {}", G, "expected ',' or ')' in the solid's options"},
+       {"solid a (crease 30) {}", G, "expected ',' or ')' in the solid's options"},
+       {"solid a (crease: 30,) {}", G, "expected an option after ',' in the solid's options"},
+       {"solid a (crease:) {}", G, "expected a value after the argument name and ':'"},
+       {"solid a (crease: 30)", G, "expected '{' after the solid's name"},
+       {"solid a (crease: 30) vertex 1 = (0, 0, 0)", G, "expected '{' after the solid's name"}});
+  check_rows<g::solid_options>(
+      {{"(crease: 30)", S}, {"()", S}, {"crease: 30", L}, {"(", G, "expected ',' or ')'"}});
+}
+
 TEST(Grammar, Statements) {
   check_rows<g::statement>({
       {"let m = import(\"bunny.off\")", S},

@@ -112,6 +112,34 @@ TEST(Parser, SolidNodes) {
   EXPECT_EQ(line.to.number, 13);
 }
 
+TEST(Parser, SolidOptions) {
+  const std::string text =
+      "solid carrier (planarity: 0.003, crossing_holes: true) {\n  vertex 1 = (0, 0, 0)\n  face 1 2 3\n}\n";
+  EXPECT_EQ(ast(text),
+            "(solid carrier (options planarity:0.003 crossing_holes:true) (vertex 1 (vec 0 0 0)) "
+            "(face 1 2 3))");
+  const Script script = parse_ok(text);
+  const auto& solid = std::get<SolidStmt>(script.statements.at(0).node);
+  EXPECT_EQ(solid.name.text, "carrier");
+  ASSERT_EQ(solid.options.size(), 2U);
+  ASSERT_EQ(solid.items.size(), 2U);
+  EXPECT_EQ(solid.options[0].label->text, "planarity");
+  EXPECT_EQ(span_text(text, solid.options[0].span), "planarity: 0.003");
+  EXPECT_EQ(span_text(text, solid.options[0].label->span), "planarity");
+  EXPECT_EQ(span_text(text, solid.options[0].value->span), "0.003");
+  EXPECT_EQ(solid.options[1].span.begin.column, 34U);
+  EXPECT_TRUE(std::get<BoolLit>(solid.options[1].value->node).value);
+  EXPECT_EQ(span_text(text, script.statements[0].span), text.substr(0, text.size() - 1));
+
+  // Expressions, positional values (the runtime rejects them), an empty list, no list, over lines.
+  EXPECT_EQ(ast("solid s (crease: 2 * c, 30) {}"), "(solid s (options crease:(* 2 c) 30))");
+  EXPECT_EQ(ast("solid s () {}"), "(solid s)");
+  EXPECT_EQ(ast("solid s {}"), "(solid s)");
+  EXPECT_EQ(ast("solid s(\n  crease: 30,   # degrees\n  fix_winding: false\n){ face 1 2 3 }"),
+            "(solid s (options crease:30 fix_winding:false) (face 1 2 3))");
+  EXPECT_TRUE(std::get<SolidStmt>(parse_ok("solid s {}").statements.at(0).node).options.empty());
+}
+
 TEST(Parser, CallsWithNamedArguments) {
   const std::string text =
       "camera main = lookat(eye: (30, 20, 15), target: (0, 0, 0), up: (0, 0, 1), fov: 40)";

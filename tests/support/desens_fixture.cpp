@@ -54,4 +54,28 @@ const DesensModel& desens_model(const std::string& which) {
   return cache.emplace(which, load(all.at(which))).first->second;
 }
 
+std::vector<std::array<double, 4>> desens_expected_lines(const DesensModel& model, const std::string& view) {
+  std::vector<std::array<double, 4>> rows = model.thesis_lines.at(view);
+  const nlohmann::json& raw = model.raw;
+  if (raw.contains("thesis_corrections") && raw["thesis_corrections"].contains(view))
+    for (const auto& [row, values] : raw["thesis_corrections"][view].items())
+      rows.at(std::stoi(row) - 1) = {values[0], values[1], values[2], values[3]};
+  if (raw.contains("known_deviations") && raw["known_deviations"].contains(view)) {
+    const auto& dev = raw["known_deviations"][view];
+    if (dev.contains("quantized_rows"))
+      for (const auto& [row, xy] : dev["quantized_rows"].items()) {
+        rows.at(std::stoi(row) - 1)[2] = xy[0];
+        rows.at(std::stoi(row) - 1)[3] = xy[1];
+      }
+    if (dev.contains("split_edge_9_56")) {
+      // Rows 17 and 18 are the two halves; the correct drawing is n9 → n56 whole (values from the note).
+      rows.at(16) = {-0.565057, -0.246062, -0.565038, -0.247192};
+      rows.erase(rows.begin() + 17);
+    }
+    if (dev.contains("missing_in_thesis"))
+      for (const auto& seg : dev["missing_in_thesis"]) rows.push_back({seg[0], seg[1], seg[2], seg[3]});
+  }
+  return rows;
+}
+
 }  // namespace hlr::test

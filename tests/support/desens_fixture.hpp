@@ -32,4 +32,10 @@ struct DesensModel {
 // "lblock" or "carrier"; loaded once and cached. Throws std::runtime_error for an unknown name or bad file.
 const DesensModel& desens_model(const std::string& which);
 
+// A view's printed visible lines (XSTART, YSTART, XEND, YEND) as a correct program draws them: the
+// thesis's rows with the fixture's corrections applied — OCR repairs, exact values for the quantised
+// T-junctions, edge 9–56 of Carrier (1) whole, and the two edges the 1969 program missed there
+// (shared/reference/001_desens.md §5.4, fields thesis_corrections and known_deviations).
+std::vector<std::array<double, 4>> desens_expected_lines(const DesensModel& model, const std::string& view);
+
 }  // namespace hlr::test

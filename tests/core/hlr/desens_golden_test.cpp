@@ -20,32 +20,6 @@ namespace {
 using Row = std::array<double, 4>;
 constexpr double kTolerance = 1e-4;
 
-// The printed rows with the fixture's corrections applied: OCR repairs, exact values for the quantised
-// T-junctions, edge 9–56 of Carrier (1) whole, and the two edges the 1969 program missed in Carrier (1).
-std::vector<Row> expected_rows(const test::DesensModel& model, const std::string& view) {
-  std::vector<Row> rows = model.thesis_lines.at(view);
-  const auto& raw = model.raw;
-  if (raw.contains("thesis_corrections") && raw["thesis_corrections"].contains(view))
-    for (const auto& [row, values] : raw["thesis_corrections"][view].items())
-      rows.at(std::stoi(row) - 1) = {values[0], values[1], values[2], values[3]};
-  if (raw.contains("known_deviations") && raw["known_deviations"].contains(view)) {
-    const auto& dev = raw["known_deviations"][view];
-    if (dev.contains("quantized_rows"))
-      for (const auto& [row, xy] : dev["quantized_rows"].items()) {
-        rows.at(std::stoi(row) - 1)[2] = xy[0];
-        rows.at(std::stoi(row) - 1)[3] = xy[1];
-      }
-    if (dev.contains("split_edge_9_56")) {
-      // Rows 17 and 18 are the two halves; the correct drawing is n9 → n56 whole (values from the note).
-      rows.at(16) = {-0.565057, -0.246062, -0.565038, -0.247192};
-      rows.erase(rows.begin() + 17);
-    }
-    if (dev.contains("missing_in_thesis"))
-      for (const auto& seg : dev["missing_in_thesis"]) rows.push_back({seg[0], seg[1], seg[2], seg[3]});
-  }
-  return rows;
-}
-
 bool same_segment(const Row& row, const VisibleSegment& s, double tol) {
   auto close = [&](double x0, double y0, Point2 p) { return std::abs(x0 - p.x) <= tol && std::abs(y0 - p.y) <= tol; };
   return (close(row[0], row[1], s.s0) && close(row[2], row[3], s.s1)) ||
@@ -66,7 +40,7 @@ void check_view(const std::string& which, const std::string& view, const Solid& 
   Scene scene;
   scene.objects.push_back({which, solid});
   const FrameResult result = render_frame(scene, desens_camera(params));
-  const std::vector<Row> expected = expected_rows(model, view);
+  const std::vector<Row> expected = test::desens_expected_lines(model, view);
 
   std::vector<bool> used(result.segments.size(), false);
   for (std::size_t r = 0; r < expected.size(); ++r) {
