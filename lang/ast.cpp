@@ -4,6 +4,8 @@
 #include <charconv>
 #include <string>
 
+#include "lang/overloaded.hpp"
+
 namespace hlr::lang {
 
 const char* to_string(UnaryOp op) { return op == UnaryOp::Negate ? "-" : "not"; }
@@ -45,13 +47,6 @@ const char* to_string(BinaryOp op) {
 }
 
 namespace {
-
-template <class... F>
-struct Overloaded : F... {
-  using F::operator()...;
-};
-template <class... F>
-Overloaded(F...) -> Overloaded<F...>;
 
 std::string number_text(double value) {
   char buffer[64];

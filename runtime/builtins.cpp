@@ -101,4 +101,11 @@ Value generated_solid(const CallArgs& call, std::size_t faces, const std::functi
   }
 }
 
+double crease_angle(const Bound& b, std::size_t i) {
+  const double deg = b.number(i);
+  if (!(deg >= 0 && deg <= 180))
+    b.fail(i, "must be between 0 and 180 degrees (got " + format_number(deg) + ")");
+  return deg;
+}
+
 }  // namespace hlr::runtime

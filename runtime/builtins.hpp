@@ -61,6 +61,9 @@ Value finite_vector(const CallArgs& call, Vector3 v);
 // arguments) is charged to the frame's budget before anything is built, so sphere(1, slices: 1e6) is a
 // limit error, not an exhausted memory. The generator's invalid_argument or runtime_error becomes an
 // error at the call.
+// A crease-angle argument: degrees from 0 to 180, else an error at the argument.
+double crease_angle(const Bound& b, std::size_t i);
+
 Value generated_solid(const CallArgs& call, std::size_t faces, const std::function<Solid()>& make);
 
 }  // namespace hlr::runtime

@@ -20,13 +20,6 @@ constexpr int kMaxCount = static_cast<int>(kMaxFaces);
 
 Param crease_param() { return optional("crease", kNumber, Value::number(30)); }
 
-double crease(const Bound& b, std::size_t i) {
-  const double deg = b.number(i);
-  if (!(deg >= 0 && deg <= 180))
-    b.fail(i, "must be between 0 and 180 degrees (got " + format_number(deg) + ")");
-  return deg;
-}
-
 // A list of at least `min` points.
 std::vector<Point3> points_arg(const Bound& b, std::size_t i, std::size_t min) {
   const std::vector<Vector3> vs = b.vectors(i);
@@ -80,7 +73,7 @@ Value cone_(CallArgs& call) {
   const double r = b.non_negative(0), h = b.positive(1), top = b.non_negative(2);
   if (r == 0 && top == 0) b.fail(0, "and top cannot both be 0");
   const int sides = b.whole(3, 3, kMaxCount);
-  const double deg = crease(b, 4);
+  const double deg = crease_angle(b, 4);
   return generated_solid(call, static_cast<std::size_t>(sides) + 2,
                          [&] { return stdlib::cone(r, h, top, sides, deg); });
 }
@@ -115,7 +108,7 @@ Value revolve_(CallArgs& call) {
   const std::vector<Point2> profile = plane_points_arg(b, 0, 2, 1);
   const int segments = b.whole(1, 1, kMaxCount);
   const double angle = b.positive(2);
-  const double deg = crease(b, 3);
+  const double deg = crease_angle(b, 3);
   const std::size_t faces = static_cast<std::size_t>(segments) * profile.size() + 2;
   return generated_solid(call, faces, [&] { return stdlib::revolve(profile, segments, angle, deg); });
 }
@@ -126,7 +119,7 @@ Value sweep_(CallArgs& call) {
   const Bound b = call.bind(params);
   const std::vector<Point2> profile = plane_points_arg(b, 0, 3, 2);
   const std::vector<Point3> path = points_arg(b, 1, 2);
-  const double deg = crease(b, 2);
+  const double deg = crease_angle(b, 2);
   const std::size_t faces = profile.size() * path.size() + 2;
   return generated_solid(call, faces, [&] { return stdlib::sweep(profile, path, deg); });
 }
@@ -151,7 +144,7 @@ Value heightfield_(CallArgs& call) {
   }
   const double dx = b.positive(1), dy = b.positive(2);
   const std::optional<double> base = b.present(3) ? std::optional<double>(b.number(3)) : std::nullopt;
-  const double deg = crease(b, 4);
+  const double deg = crease_angle(b, 4);
   return generated_solid(call, 2 * cells + 5, [&] { return stdlib::heightfield(rows, dx, dy, base, deg); });
 }
 

@@ -18,13 +18,6 @@ constexpr int kMaxCount = static_cast<int>(kMaxFaces);  // sides, slices, steps:
 
 Param crease_param(double fallback) { return optional("crease", kNumber, Value::number(fallback)); }
 
-double crease(const Bound& b, std::size_t i) {
-  const double deg = b.number(i);
-  if (!(deg >= 0 && deg <= 180))
-    b.fail(i, "must be between 0 and 180 degrees (got " + format_number(deg) + ")");
-  return deg;
-}
-
 // An outline argument: a list of at least 3 vectors in the xy plane.
 std::vector<Point2> outline_arg(const Bound& b, std::size_t i, const std::string& what = "") {
   const std::vector<Vector3> points = b.vectors(i);
@@ -99,7 +92,7 @@ Value cylinder_(CallArgs& call) {
   const Bound b = call.bind(params);
   const double r = b.positive(0), h = b.positive(1);
   const int sides = b.whole(2, 3, kMaxCount);
-  const double deg = crease(b, 3);
+  const double deg = crease_angle(b, 3);
   return generated_solid(call, static_cast<std::size_t>(sides) + 2, [&] {
     return stdlib::cylinder({0, 0, 0}, r, h, sides, deg);
   });
@@ -112,7 +105,7 @@ Value sphere_(CallArgs& call) {
   const Bound b = call.bind(params);
   const double r = b.positive(0);
   const int slices = b.whole(1, 3, kMaxCount), stacks = b.whole(2, 2, kMaxCount);
-  const double deg = crease(b, 3);
+  const double deg = crease_angle(b, 3);
   return generated_solid(call, static_cast<std::size_t>(slices) * static_cast<std::size_t>(stacks), [&] {
     return stdlib::sphere({0, 0, 0}, r, slices, stacks, deg);
   });
@@ -126,7 +119,7 @@ Value torus_(CallArgs& call) {
   const double big = b.positive(0), small = b.positive(1);
   if (!(small < big)) b.fail(1, "must be below R (" + format_number(big) + "), got " + format_number(small));
   const int major = b.whole(2, 3, kMaxCount), minor = b.whole(3, 3, kMaxCount);
-  const double deg = crease(b, 4);
+  const double deg = crease_angle(b, 4);
   return generated_solid(call, static_cast<std::size_t>(major) * static_cast<std::size_t>(minor), [&] {
     return stdlib::torus({0, 0, 0}, big, small, major, minor, deg);
   });

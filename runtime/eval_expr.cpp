@@ -1,6 +1,7 @@
 // Expressions: literals, names, strings with interpolation, operators, member and index access.
 #include <cmath>
 
+#include "lang/overloaded.hpp"
 #include "runtime/builtins.hpp"
 #include "runtime/eval_detail.hpp"
 #include "runtime/evaluator.hpp"
@@ -11,12 +12,7 @@ namespace hlr::runtime {
 
 namespace {
 
-template <class... F>
-struct Overloaded : F... {
-  using F::operator()...;
-};
-template <class... F>
-Overloaded(F...) -> Overloaded<F...>;
+using lang::Overloaded;
 
 // An index value as a position in a sequence of `size` items; negative counts from the end.
 std::size_t checked_index(const Value& index, std::size_t size, const lang::SourceSpan& span) {

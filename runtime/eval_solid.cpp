@@ -8,6 +8,7 @@
 #include <string_view>
 
 #include "core/solid/solid_builder.hpp"
+#include "lang/overloaded.hpp"
 #include "runtime/eval_detail.hpp"
 #include "runtime/evaluator.hpp"
 #include "runtime/format_value.hpp"
@@ -16,12 +17,7 @@ namespace hlr::runtime {
 
 namespace {
 
-template <class... F>
-struct Overloaded : F... {
-  using F::operator()...;
-};
-template <class... F>
-Overloaded(F...) -> Overloaded<F...>;
+using lang::Overloaded;
 
 // Numbers by value ("01" is vertex 1), names as written.
 std::string vertex_key(const lang::VertexId& id) {

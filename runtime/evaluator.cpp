@@ -4,6 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "lang/overloaded.hpp"
 #include "runtime/eval_detail.hpp"
 #include "runtime/placement.hpp"
 
@@ -11,12 +12,7 @@ namespace hlr::runtime {
 
 namespace {
 
-template <class... F>
-struct Overloaded : F... {
-  using F::operator()...;
-};
-template <class... F>
-Overloaded(F...) -> Overloaded<F...>;
+using lang::Overloaded;
 
 bool is_identity(const Affine3& a) {
   const Affine3 id;
