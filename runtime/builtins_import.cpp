@@ -28,8 +28,18 @@ using CacheKey = std::tuple<std::string, double, std::uintmax_t, fs::file_time_t
 std::mutex cache_mutex;
 std::map<CacheKey, CachedMesh> cache;
 
-std::string problem_text(const stdlib::MeshProblem& p) {
-  std::string where = p.file;
+// The mesh file as the script names it: the importer reports the resolved path (and, for an Albers pair,
+// maybe the partner file beside it), the user wrote a path relative to the script.
+std::string shown_file(const std::string& reported, const fs::path& resolved, const std::string& written) {
+  const fs::path r(reported);
+  if (r == resolved) return written;
+  if (r.parent_path() == resolved.parent_path())
+    return (fs::path(written).parent_path() / r.filename()).string();
+  return reported;
+}
+
+std::string problem_text(const stdlib::MeshProblem& p, const fs::path& resolved, const std::string& written) {
+  std::string where = shown_file(p.file, resolved, written);
   if (p.line > 0) where += ":" + std::to_string(p.line);
   if (p.column > 0) where += ":" + std::to_string(p.column);
   return where + ": " + p.message;
@@ -59,8 +69,10 @@ Value import_(CallArgs& call) {
   std::error_code ec;
   const fs::file_status status = fs::status(path, ec);
   if (!fs::exists(status))
-    fail_import(b.span(0), "cannot import '" + written + "': no such file (looked for " + path.string() + ")",
-                "paths are relative to the script that names them", ErrorKind::Input);
+    fail_import(
+        b.span(0),
+        "cannot import '" + written + "': no such file (looked for " + path.lexically_normal().string() + ")",
+        "paths are relative to the script that names them", ErrorKind::Input);
   const std::uintmax_t size = fs::is_regular_file(status) ? fs::file_size(path, ec) : 0;
   const auto mtime = fs::last_write_time(path, ec).time_since_epoch().count();
   const CacheKey key{fs::weakly_canonical(path, ec).string(), crease, size, mtime};
@@ -84,7 +96,7 @@ Value import_(CallArgs& call) {
       // script's (exit 65), like any other bad data it names.
       const bool unreadable =
           p.line == 0 && (p.message.rfind("cannot open", 0) == 0 || p.message.rfind("cannot read", 0) == 0);
-      fail_import(b.span(0), "cannot import '" + written + "': " + problem_text(p), p.hint,
+      fail_import(b.span(0), "cannot import '" + written + "': " + problem_text(p, path, written), p.hint,
                   unreadable ? ErrorKind::Input : ErrorKind::Script);
     }
     const std::lock_guard<std::mutex> lock(cache_mutex);
@@ -95,7 +107,7 @@ Value import_(CallArgs& call) {
     lang::Diagnostic d;
     d.severity = lang::Severity::Warning;
     d.span = b.span(0);
-    d.message = "import '" + written + "': " + problem_text(w);
+    d.message = "import '" + written + "': " + problem_text(w, path, written);
     d.hint = w.hint;
     call.budget().warn(std::move(d));
   }
