@@ -260,7 +260,7 @@ bool prepare_face(FaceWork& work, bool from_loop, int number, std::int64_t tag, 
   const double allowed = options.planarity_tolerance * face_size;
   if (worst > Tolerance::kPlanarity * face_size) {  // messages are built only when needed
     const std::string deviation = name + " is not planar: vertex " + vertices.id(worst_vertex) + " lies " +
-                                  format_number(worst) + " off the plane of the others";
+                                  format_number(worst) + " off the face's mean plane";
     if (worst > allowed) {
       diagnostics.error("non-planar",
                         deviation + " (tolerance " + format_number(options.planarity_tolerance) +

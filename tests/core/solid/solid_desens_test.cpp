@@ -97,7 +97,7 @@ TEST(SolidDesens, CarrierIsRejectedByTheStrictChecks) {
     EXPECT_EQ(warped[i]->tag, static_cast<std::int64_t>(13 + i));
     EXPECT_EQ(warped[i]->message.rfind(id("face ", 13 + i) + " is not planar: vertex ", 0), 0u);
   }
-  EXPECT_NE(warped[1]->message.find(" lies 1.07248 off the plane"), std::string::npos) << warped[1]->message;
+  EXPECT_NE(warped[1]->message.find(" lies 1.07248 off the face's mean plane"), std::string::npos) << warped[1]->message;
   ASSERT_EQ(holes.size(), 1u) << all_messages(r);
   EXPECT_EQ(holes[0]->tag, 17);
   EXPECT_EQ(holes[0]->message.rfind("hole 1 of face 17 crosses its outer boundary (edges 45\u201348 and 54\u201355)", 0),

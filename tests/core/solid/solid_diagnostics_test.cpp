@@ -120,7 +120,7 @@ TEST(SolidDiagnostics, NonPlanarFaceReportsItsDeviation) {
   const SolidDiagnostic& d = only(r, "non-planar");
   EXPECT_EQ(d.severity, Severity::Error);
   EXPECT_EQ(d.message, "face 1 is not planar: vertex p3 lies " + value.str() +
-                           " off the plane of the others (tolerance 1e-06 × face size); split it into planar faces");
+                           " off the face's mean plane (tolerance 1e-06 × face size); split it into planar faces");
   EXPECT_EQ(d.tag, 14);
   EXPECT_GT(worst, 0.1);
 }
