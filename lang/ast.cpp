@@ -137,6 +137,10 @@ std::string dump(const Expr& expr) {
             for (const auto& item : l.items) out += " " + dump(*item);
             return out + ")";
           },
+          [](const ListComprehension& c) {
+            return "(comp " + dump(*c.element) + " for " + c.variable.text + " in " + dump(*c.iterable) +
+                   (c.condition ? " if " + dump(*c.condition) : "") + ")";
+          },
           [](const NameRef& n) { return n.name; },
           [](const UnaryExpr& u) {
             return std::string("(") + to_string(u.op) + " " + dump(*u.operand) + ")";

@@ -56,6 +56,13 @@ struct VectorLit {  // (x, y, z)
 struct ListLit {  // [a, b, ...]
   std::vector<ExprPtr> items;
 };
+// [element for variable in iterable] or [... if condition]: `variable` is bound afresh per item.
+struct ListComprehension {
+  ExprPtr element;
+  Name variable;
+  ExprPtr iterable;
+  ExprPtr condition;  // null without `if`
+};
 struct NameRef {
   std::string name;
 };
@@ -97,8 +104,8 @@ inline constexpr std::uint32_t kMaxExprHeight = 256;
 
 struct Expr {
   SourceSpan span;
-  std::variant<NumberLit, BoolLit, StringLit, VectorLit, ListLit, NameRef, UnaryExpr, BinaryExpr, CallExpr,
-               MemberExpr, IndexExpr>
+  std::variant<NumberLit, BoolLit, StringLit, VectorLit, ListLit, ListComprehension, NameRef, UnaryExpr,
+               BinaryExpr, CallExpr, MemberExpr, IndexExpr>
       node;
   std::uint32_t height = 1;  // nodes on the longest path down from here, this one included
 };

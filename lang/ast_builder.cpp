@@ -99,9 +99,21 @@ struct action<g::paren_expr> {
 };
 
 template <>
+struct action<g::comp_variable> : push_name {};
+
+// [element for variable in iterable (if condition)] when a Name follows the first item, else a list.
+template <>
 struct action<g::list_lit> {
   template <typename Input>
   static void apply(const Input& in, ParseState& s) {
+    const std::size_t first = first_child(s);
+    if (child_count(s) >= 3 && holds<Name>(s.items[first + 1])) {
+      ListComprehension comp{box(take<Expr>(s.items[first])), take<Name>(s.items[first + 1]),
+                             box(take<Expr>(s.items[first + 2])), nullptr};
+      if (child_count(s) == 4) comp.condition = box(take<Expr>(s.items[first + 3]));
+      replace_children(s, with_height(Expr{span_of(in, s), std::move(comp)}, s));
+      return;
+    }
     ListLit list;
     for (std::size_t i = first_child(s); i < s.items.size(); ++i)
       list.items.push_back(box(take<Expr>(s.items[i])));

@@ -55,6 +55,10 @@ inline Expr with_height(Expr&& e, const ParseState& s) {
           for (const auto& c : node.components) see(c);
         } else if constexpr (std::is_same_v<T, ListLit>) {
           for (const auto& item : node.items) see(item);
+        } else if constexpr (std::is_same_v<T, ListComprehension>) {
+          see(node.element);
+          see(node.iterable);
+          see(node.condition);
         } else if constexpr (std::is_same_v<T, UnaryExpr>) {
           see(node.operand);
         } else if constexpr (std::is_same_v<T, BinaryExpr>) {

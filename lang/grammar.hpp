@@ -27,7 +27,7 @@
 //   mul_expr    * / %               left-assoc
 //   neg_expr    -a                  prefix
 //   postfix     f(x, k: v)  v.x  l[0]
-//   primary     number string true false (x, y, z) (e) [a, b] name
+//   primary     number string true false (x, y, z) (e) [a, b] [e for x in l if c] name
 //
 // Solids: `solid NAME [(OPTION: EXPR, ...)] { vertex ... face ... hole ... line ... }`.
 //
@@ -140,8 +140,17 @@ struct list_open : one< '[' > {};
 struct list_item : seq< expression > {};
 struct list_next_item : seq< list_item > {};
 struct list_close : one< ']' > {};
-struct list_items : seq< list_item, star< sp, one< ',' >, sp, must< list_next_item > > > {};
-struct list_lit : seq< list_open, sp, opt< list_items, sp >, must< list_close > > {};
+// After the first item: a `for` clause (a comprehension, `[EXPR for NAME in ITERABLE]` or with
+// `if COND`), or more items. One rule, so the first item is parsed once, however deep lists nest.
+struct comp_variable : name {};
+struct comp_in : key_in {};
+struct comp_iterable : seq< expression > {};
+struct comp_condition : seq< expression > {};
+struct comp_filter : seq< key_if, sp, must< comp_condition > > {};
+struct comp_close : one< ']' > {};
+struct comp_for : seq< key_for, sp, must< comp_variable >, sp, must< comp_in >, sp, must< comp_iterable >, opt< sp, comp_filter >, sp, must< comp_close > > {};
+struct list_rest : seq< star< one< ',' >, sp, must< list_next_item >, sp >, must< list_close > > {};
+struct list_lit : seq< list_open, sp, sor< seq< list_item, sp, sor< comp_for, list_rest > >, must< list_close > > > {};
 
 struct name_ref : name {};
 struct primary : sor< number, string_lit, bool_lit, paren_expr, list_lit, name_ref > {};

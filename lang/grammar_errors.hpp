@@ -50,6 +50,12 @@ HLR_ERROR(vector_close, "expected ')' after the third component: a vector has ex
 HLR_ERROR(list_next_item, "expected a list element after ','");
 HLR_HINT(list_next_item, "a trailing ',' is not allowed: write '[a, b]'");
 HLR_ERROR(list_close, "expected ',' or ']' in the list");
+HLR_ERROR(comp_variable, "expected the comprehension's variable after 'for', as in '[i * i for i in 0..10]'");
+HLR_ERROR(comp_in, "expected 'in' after the comprehension's variable, as in '[i * i for i in 0..10]'");
+HLR_ERROR(comp_iterable, "expected a range or list after 'in', as in '[i * i for i in 0..10]'");
+HLR_ERROR(comp_condition, "expected a condition after 'if', as in '[i for i in 0..10 if i % 2 == 0]'");
+HLR_ERROR(comp_close, "expected ']' to end the comprehension");
+HLR_HINT(comp_close, "a comprehension has one 'for' and at most one 'if', as in '[i for i in 0..10 if i % 2 == 0]'; nest comprehensions for more");
 HLR_ERROR(labeled_value, "expected a value after the argument name and ':', as in 'fov: 40'");
 HLR_ERROR(next_argument, "expected an argument after ','");
 HLR_HINT(next_argument, "a trailing ',' is not allowed: write 'f(a, b)'");
@@ -139,6 +145,7 @@ template <> inline constexpr char closes<call_close> = '(';
 template <> inline constexpr char closes<params_close> = '(';
 template <> inline constexpr char closes<solid_options_close> = '(';
 template <> inline constexpr char closes<list_close> = '[';
+template <> inline constexpr char closes<comp_close> = '[';
 template <> inline constexpr char closes<index_close> = '[';
 template <> inline constexpr char closes<interp_close> = '{';
 template <> inline constexpr char closes<solid_close> = '{';
@@ -174,6 +181,7 @@ template <> inline constexpr bool expects_name<def_name> = true;
 template <> inline constexpr bool expects_name<next_param> = true;
 template <> inline constexpr bool expects_name<params_close> = true;
 template <> inline constexpr bool expects_name<for_variable> = true;
+template <> inline constexpr bool expects_name<comp_variable> = true;
 template <> inline constexpr bool expects_name<camera_name> = true;
 template <> inline constexpr bool expects_name<member_name> = true;
 

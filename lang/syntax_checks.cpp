@@ -120,6 +120,10 @@ class Checker {
             for (const auto& c : node.components) expr(*c);
           } else if constexpr (std::is_same_v<T, ListLit>) {
             for (const auto& item : node.items) expr(*item);
+          } else if constexpr (std::is_same_v<T, ListComprehension>) {
+            expr(*node.element);
+            expr(*node.iterable);
+            if (node.condition) expr(*node.condition);
           } else if constexpr (std::is_same_v<T, UnaryExpr>) {
             expr(*node.operand);
           } else if constexpr (std::is_same_v<T, BinaryExpr>) {

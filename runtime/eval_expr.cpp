@@ -63,6 +63,7 @@ Value Evaluator::eval(const lang::Expr& expr, const ScopePtr& scope) {
             for (const auto& item : l.items) items.push_back(eval(*item, scope));
             return Value::list(std::move(items));
           },
+          [&](const lang::ListComprehension& c) { return eval_comprehension(c, expr, scope); },
           [&](const lang::NameRef& n) { return eval_name(n, expr, scope); },
           [&](const lang::UnaryExpr& u) { return unary_op(u, eval(*u.operand, scope), expr.span); },
           [&](const lang::BinaryExpr& b) { return eval_binary(b, expr, scope); },
@@ -71,6 +72,33 @@ Value Evaluator::eval(const lang::Expr& expr, const ScopePtr& scope) {
           [&](const lang::IndexExpr& i) { return eval_index(i, scope); },
       },
       expr.node);
+}
+
+Value Evaluator::eval_comprehension(const lang::ListComprehension& comp, const lang::Expr& expr,
+                                    const ScopePtr& scope) {
+  const Value items = eval(*comp.iterable, scope);
+  if (!items.is_sequence())
+    fail(comp.iterable->span,
+         "a list comprehension needs a list or a range to walk, got " + kind_with_article(items.kind()),
+         "for example: [i * i for i in 0..10] or [p.x for p in [(0, 0, 0), (1, 0, 0)]]");
+  const std::size_t n = sequence_size(items);
+  List out;
+  for (std::size_t i = 0; i < n; ++i) {
+    budget_.step(expr.span);
+    auto item_scope = std::make_shared<Scope>(scope);  // one scope per item: closures keep their own item
+    item_scope->define(comp.variable.text, sequence_item(items, i), comp.variable.span);
+    if (comp.condition) {
+      const Value keep = eval(*comp.condition, item_scope);
+      if (!keep.is(ValueKind::Bool))
+        fail(comp.condition->span,
+             "a list comprehension's 'if' needs a bool condition, got " + kind_with_article(keep.kind()),
+             "compare explicitly, e.g. [i for i in l if i != 0]");
+      if (!keep.as_bool()) continue;
+    }
+    Budget::check_list_size(expr.span, out.size() + 1);
+    out.push_back(eval(*comp.element, item_scope));
+  }
+  return Value::list(std::move(out));
 }
 
 Value Evaluator::eval_name(const lang::NameRef& ref, const lang::Expr& expr, const ScopePtr& scope) {

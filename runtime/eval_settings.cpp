@@ -1,6 +1,7 @@
 // Settings statements (animate, output, paper, style) and include. Each setting may be given once per
 // evaluation; a second one is an error pointing at the first, so two files cannot silently disagree.
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 
 #include "runtime/eval_detail.hpp"
@@ -94,13 +95,23 @@ void Evaluator::exec_style(const lang::StyleStmt& style, const lang::Stmt& stmt)
   out_.hidden_span = stmt.span;
 }
 
+std::filesystem::path stdlib_module_directory() {
+  if (const char* dir = std::getenv("HLRSCRIPT_STDLIB"); dir && *dir) return dir;
+  return HLR_STDLIB_MODULES;
+}
+
 void Evaluator::exec_include(const lang::IncludeStmt& include, const ScopePtr& scope) {
   namespace fs = std::filesystem;
   const SourceEntry* from = sources_.entry(include.path_span.file);
   const fs::path base = from ? from->path.parent_path() : fs::current_path();
   const fs::path shown_base = from ? fs::path(from->source->name()).parent_path() : fs::path();
-  const fs::path target = fs::path(include.path).is_absolute() ? fs::path(include.path) : base / include.path;
-  const std::string shown = fs::path(include.path).is_absolute()
+  // "std/NAME.hls" names a library module written in hlrscript (stdlib/modules/); any other path is
+  // relative to the including file.
+  const bool library = include.path.rfind("std/", 0) == 0;
+  const fs::path target = library ? stdlib_module_directory() / include.path.substr(4)
+                          : fs::path(include.path).is_absolute() ? fs::path(include.path)
+                                                                 : base / include.path;
+  const std::string shown = library || fs::path(include.path).is_absolute()
                                 ? include.path
                                 : (shown_base / include.path).lexically_normal().string();
   if (include.path.empty()) fail(include.path_span, "the include path is empty");
@@ -111,8 +122,10 @@ void Evaluator::exec_include(const lang::IncludeStmt& include, const ScopePtr& s
     lang::Diagnostic d;
     d.span = include.path_span;
     d.message = error;
-    d.hint =
-        "include paths are relative to the including file ('" + (from ? from->source->name() : "") + "')";
+    d.hint = library ? "library modules live in " + stdlib_module_directory().string() +
+                           " (HLRSCRIPT_STDLIB overrides it)"
+                     : "include paths are relative to the including file ('" +
+                           (from ? from->source->name() : "") + "')";
     throw EvalError(std::move(d), ErrorKind::Input);
   }
   if (!entry->script) throw EvalError(entry->diagnostics, ErrorKind::Script, "syntax errors in " + shown);

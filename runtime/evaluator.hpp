@@ -7,6 +7,7 @@
 #pragma once
 
 #include <cstddef>
+#include <filesystem>
 #include <memory>
 #include <set>
 #include <string>
@@ -23,6 +24,10 @@
 #include "runtime/value.hpp"
 
 namespace hlr::runtime {
+
+// Where `include "std/NAME.hls"` finds the library modules written in hlrscript: $HLRSCRIPT_STDLIB, else
+// the source tree's stdlib/modules (compiled in).
+std::filesystem::path stdlib_module_directory();
 
 class Evaluator {
  public:
@@ -62,6 +67,8 @@ class Evaluator {
 
   // expressions (eval_expr.cpp)
   Value eval(const lang::Expr& expr, const ScopePtr& scope);
+  Value eval_comprehension(const lang::ListComprehension& comp, const lang::Expr& expr,
+                           const ScopePtr& scope);
   Value eval_name(const lang::NameRef& ref, const lang::Expr& expr, const ScopePtr& scope);
   Value eval_string(const lang::StringLit& lit, const ScopePtr& scope);
   Value eval_binary(const lang::BinaryExpr& bin, const lang::Expr& expr, const ScopePtr& scope);

@@ -130,6 +130,15 @@ const Case kCases[] = {
   {"let x = a and", "1:14: expected an operand after 'and'"},
   {"let x = -", "1:10: expected an operand after '-'"},
   {"let x = l[]", "1:11: expected an index after '[', as in 'l[0]'"},
+  // list comprehensions
+  {"let x = [i for in l]", "1:16: 'in' is a reserved word and cannot be used as a name"},
+  {"let x = [i for]", "1:15: expected the comprehension's variable after 'for', as in '[i * i for i in 0..10]'"},
+  {"let x = [i for i of 0..4]", "1:18: expected 'in' after the comprehension's variable, as in '[i * i for i in 0..10]'"},
+  {"let x = [i for i in ]", "1:21: expected a range or list after 'in', as in '[i * i for i in 0..10]'"},
+  {"let x = [i for i in l if ]", "1:26: expected a condition after 'if', as in '[i for i in 0..10 if i % 2 == 0]'"},
+  {"let x = [i for i in l,\n  2]", "1:22: expected ']' to end the comprehension (to close '[' at line 1)"},
+  {"let x = [i for i in l\nlet y = 2\n", "1:22: expected ']' to end the comprehension (to close '[' at line 1)"},
+  {"let x = [i\n  for j in m for k in n]", "2:14: expected ']' to end the comprehension (to close '[' at line 1)"},
 };
 // clang-format on
 

@@ -118,6 +118,28 @@ TEST(Grammar, Lists) {
                            {"[1", G, "expected ',' or ']'"}});
 }
 
+TEST(Grammar, ListComprehensions) {
+  check_rows<g::list_lit>({{"[i * i for i in 0..10]", S},
+                           {"[i for i in 0..10 if i % 2 == 0]", S},
+                           {"[ p.x for p in ps if p.y > 0 ]", S},
+                           {"[[j for j in 0..i] for i in 0..4]", S},
+                           {"[f(x) for x in [1, 2] if not done(x)]", S},
+                           {"[x\nfor x # note\nin l]", S},
+                           {"[x for]", G, "expected the comprehension's variable after 'for'"},
+                           {"[x for 1 in l]", G, "expected the comprehension's variable after 'for'"},
+                           {"[x for x l]", G, "expected 'in' after the comprehension's variable"},
+                           {"[x for x in]", G, "expected a range or list after 'in'"},
+                           {"[x for x in l if]", G, "expected a condition after 'if'"},
+                           {"[x for x in l", G, "expected ']' to end the comprehension"},
+                           {"[x for x in l, 2]", G, "expected ']' to end the comprehension"},
+                           {"[x for x in l if a if b]", G, "expected ']' to end the comprehension"},
+                           {"[x for x in l for y in m]", G, "expected ']' to end the comprehension"},
+                           {"[1, x for x in l]", G, "expected ',' or ']'"},
+                           {"[for x in l]", G, "expected ',' or ']'"}});
+  // `for`, `in` and `if` stay reserved: never names, so never the start of an item.
+  check_rows<g::name>({{"for", L}, {"in", L}, {"if", L}, {"format", S}, {"index", S}, {"iffy", S}});
+}
+
 TEST(Grammar, Postfix) {
   check_rows<g::postfix_expr>({{"f()", S},
                                {"f(1, 2)", S},

@@ -188,6 +188,36 @@ TEST(Parser, Precedence) {
   EXPECT_EQ(ast("let x = a >= b"), "(let x (>= a b))");
 }
 
+TEST(Parser, ListComprehensions) {
+  EXPECT_EQ(ast("let x = [i * i for i in 0..10]"), "(let x (comp (* i i) for i in (.. 0 10)))");
+  EXPECT_EQ(ast("let x = [i for i in l if i % 2 == 0 and i > 2]"),
+            "(let x (comp i for i in l if (and (== (% i 2) 0) (> i 2))))");
+  EXPECT_EQ(ast("let x = [[j for j in 0..i] for i in 0..4]"),
+            "(let x (comp (comp j for j in (.. 0 i)) for i in (.. 0 4)))");
+  EXPECT_EQ(ast("let x = [a then b for a in l]"), "(let x (comp (then a b) for a in l))");
+  EXPECT_EQ(ast("let x = [f(p).x for p in ps][0]"), "(let x (index (comp (. (call f p) x) for p in ps) 0))");
+  // A one-item list and an empty one are still lists.
+  EXPECT_EQ(ast("let x = [[i]]"), "(let x (list (list i)))");
+
+  const std::string text = "let squares = [ i * i for i in 0..n if i != 3 ]";
+  const Script script = parse_ok(text);
+  const Expr& e = *std::get<LetStmt>(script.statements.at(0).node).value;
+  const auto& comp = std::get<ListComprehension>(e.node);
+  EXPECT_EQ(span_text(text, e.span), "[ i * i for i in 0..n if i != 3 ]");
+  EXPECT_EQ(span_text(text, comp.element->span), "i * i");
+  EXPECT_EQ(comp.variable.text, "i");
+  EXPECT_EQ(comp.variable.span.begin.column, 27U);
+  EXPECT_EQ(span_text(text, comp.variable.span), "i");
+  EXPECT_EQ(span_text(text, comp.iterable->span), "0..n");
+  ASSERT_TRUE(comp.condition);
+  EXPECT_EQ(span_text(text, comp.condition->span), "i != 3");
+  EXPECT_EQ(comp.condition->span.begin.column, 40U);
+  EXPECT_EQ(e.height, 3U);  // comp > != > i
+  EXPECT_FALSE(std::get<ListComprehension>(
+                   std::get<LetStmt>(parse_ok("let y = [k for k in l]").statements.at(0).node).value->node)
+                   .condition);
+}
+
 TEST(Parser, Literals) {
   EXPECT_EQ(ast("let x = [1, 2.5, 1e3, 1.5E-2, true, false, \"s\", (1, 2, 3), []]"),
             "(let x (list 1 2.5 1000 0.015 true false \"s\" (vec 1 2 3) (list)))");
