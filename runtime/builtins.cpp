@@ -101,6 +101,25 @@ Value generated_solid(const CallArgs& call, std::size_t faces, const std::functi
   }
 }
 
+Param crease_param(double fallback) {
+  return optional("crease", kinds(ValueKind::Number), Value::number(fallback));
+}
+
+void for_each_sublist(const CallArgs& call, const Bound& b, std::size_t i, std::string_view param,
+                      const std::string& item, const std::string& expected,
+                      const std::function<void(const Bound& one, std::size_t k)>& visit) {
+  const std::vector<Param> one_param = {required(param, kinds(ValueKind::List))};
+  const Value& list = b.value(i);
+  for (std::size_t k = 0; k < sequence_size(list); ++k) {
+    const Value sub = sequence_item(list, k);
+    if (!sub.is_sequence())
+      b.fail(i, item + " " + std::to_string(k) + " is " + kind_with_article(sub.kind()) + ", expected " +
+                    expected);
+    const CallArgs one(call.site(), {Arg{"", {}, sub, b.span(i)}}, call.budget());
+    visit(one.bind(one_param), k);
+  }
+}
+
 double crease_angle(const Bound& b, std::size_t i) {
   const double deg = b.number(i);
   if (!(deg >= 0 && deg <= 180))

@@ -61,8 +61,17 @@ Value finite_vector(const CallArgs& call, Vector3 v);
 // arguments) is charged to the frame's budget before anything is built, so sphere(1, slices: 1e6) is a
 // limit error, not an exhausted memory. The generator's invalid_argument or runtime_error becomes an
 // error at the call.
-// A crease-angle argument: degrees from 0 to 180, else an error at the argument.
+// The optional `crease:` parameter of the tessellated generators, and its check: degrees from 0 to 180,
+// else an error at the argument.
+Param crease_param(double fallback = 30);
 double crease_angle(const Bound& b, std::size_t i);
+
+// Visits the items of list argument `i` (named `param` in messages), each of which must itself be a list:
+// each is bound as a one-argument call so the typed accessors check it (`visit(one, k)` reads it as
+// `one`'s argument 0). An item that is not a list fails with "ITEM k is a number, expected EXPECTED".
+void for_each_sublist(const CallArgs& call, const Bound& b, std::size_t i, std::string_view param,
+                      const std::string& item, const std::string& expected,
+                      const std::function<void(const Bound& one, std::size_t k)>& visit);
 
 Value generated_solid(const CallArgs& call, std::size_t faces, const std::function<Solid()>& make);
 

@@ -18,8 +18,6 @@ constexpr KindSet kVector = kinds(ValueKind::Vector);
 constexpr KindSet kList = kinds(ValueKind::List);
 constexpr int kMaxCount = static_cast<int>(kMaxFaces);
 
-Param crease_param() { return optional("crease", kNumber, Value::number(30)); }
-
 // A list of at least `min` points.
 std::vector<Point3> points_arg(const Bound& b, std::size_t i, std::size_t min) {
   const std::vector<Vector3> vs = b.vectors(i);
@@ -86,17 +84,10 @@ Value extrude_(CallArgs& call) {
   const Vector3 v = b.vector(1);
   std::vector<std::vector<Point3>> holes;
   std::size_t faces = outline.size() + 2;
-  const Value& hole_list = b.value(2);
-  for (std::size_t k = 0; k < sequence_size(hole_list); ++k) {
-    const Value hole = sequence_item(hole_list, k);
-    if (!hole.is_sequence())
-      b.fail(2, "hole " + std::to_string(k) + " is " + kind_with_article(hole.kind()) +
-                    ", expected a list of points");
-    CallArgs one(call.site(), {Arg{"", {}, hole, b.span(2)}}, call.budget());
-    static const std::vector<Param> hole_params = {required("holes", kList)};
-    holes.push_back(points_arg(one.bind(hole_params), 0, 3));
+  for_each_sublist(call, b, 2, "holes", "hole", "a list of points", [&](const Bound& one, std::size_t) {
+    holes.push_back(points_arg(one, 0, 3));
     faces += holes.back().size();
-  }
+  });
   return generated_solid(call, faces, [&] { return stdlib::extrude(outline, v, holes); });
 }
 
@@ -130,18 +121,11 @@ Value heightfield_(CallArgs& call) {
       optional("dy", kNumber, Value::number(1)), optional("base", kNumber), crease_param()};
   const Bound b = call.bind(params);
   std::vector<std::vector<double>> rows;
-  const Value& list = b.value(0);
   std::size_t cells = 0;
-  for (std::size_t i = 0; i < sequence_size(list); ++i) {
-    const Value row = sequence_item(list, i);
-    if (!row.is_sequence())
-      b.fail(0, "row " + std::to_string(i) + " is " + kind_with_article(row.kind()) +
-                    ", expected a list of heights");
-    CallArgs one(call.site(), {Arg{"", {}, row, b.span(0)}}, call.budget());
-    static const std::vector<Param> row_params = {required("values", kList)};
-    rows.push_back(one.bind(row_params).numbers(0));
+  for_each_sublist(call, b, 0, "values", "row", "a list of heights", [&](const Bound& one, std::size_t) {
+    rows.push_back(one.numbers(0));
     cells += rows.back().size();
-  }
+  });
   const double dx = b.positive(1), dy = b.positive(2);
   const std::optional<double> base = b.present(3) ? std::optional<double>(b.number(3)) : std::nullopt;
   const double deg = crease_angle(b, 4);

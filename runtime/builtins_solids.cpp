@@ -16,8 +16,6 @@ constexpr KindSet kVector = kinds(ValueKind::Vector);
 constexpr KindSet kList = kinds(ValueKind::List);
 constexpr int kMaxCount = static_cast<int>(kMaxFaces);  // sides, slices, steps: the face limit bounds them
 
-Param crease_param(double fallback) { return optional("crease", kNumber, Value::number(fallback)); }
-
 // An outline argument: a list of at least 3 vectors in the xy plane.
 std::vector<Point2> outline_arg(const Bound& b, std::size_t i, const std::string& what = "") {
   const std::vector<Vector3> points = b.vectors(i);
@@ -72,23 +70,17 @@ Value prism_(CallArgs& call) {
   const double h = b.positive(1);
   std::vector<std::vector<Point2>> holes;
   std::size_t faces = outline.size() + 2;
-  const Value& hole_list = b.value(2);
-  for (std::size_t k = 0; k < sequence_size(hole_list); ++k) {
-    const Value hole = sequence_item(hole_list, k);
-    if (!hole.is_sequence())
-      b.fail(2, "hole " + std::to_string(k) + " is " + kind_with_article(hole.kind()) +
-                    ", expected an outline (a list of vectors)");
-    CallArgs one(call.site(), {Arg{"", {}, hole, b.span(2)}}, call.budget());
-    static const std::vector<Param> hole_params = {required("holes", kList)};
-    holes.push_back(outline_arg(one.bind(hole_params), 0, "hole " + std::to_string(k) + ": "));
-    faces += holes.back().size();
-  }
+  for_each_sublist(call, b, 2, "holes", "hole", "an outline (a list of vectors)",
+                   [&](const Bound& one, std::size_t k) {
+                     holes.push_back(outline_arg(one, 0, "hole " + std::to_string(k) + ": "));
+                     faces += holes.back().size();
+                   });
   return generated_solid(call, faces, [&] { return stdlib::prism(outline, holes, 0, h); });
 }
 
 Value cylinder_(CallArgs& call) {
   static const std::vector<Param> params = {required("r", kNumber), required("h", kNumber),
-                                            optional("sides", kNumber, Value::number(32)), crease_param(30)};
+                                            optional("sides", kNumber, Value::number(32)), crease_param()};
   const Bound b = call.bind(params);
   const double r = b.positive(0), h = b.positive(1);
   const int sides = b.whole(2, 3, kMaxCount);
@@ -101,7 +93,7 @@ Value cylinder_(CallArgs& call) {
 Value sphere_(CallArgs& call) {
   static const std::vector<Param> params = {required("r", kNumber),
                                             optional("slices", kNumber, Value::number(32)),
-                                            optional("stacks", kNumber, Value::number(16)), crease_param(30)};
+                                            optional("stacks", kNumber, Value::number(16)), crease_param()};
   const Bound b = call.bind(params);
   const double r = b.positive(0);
   const int slices = b.whole(1, 3, kMaxCount), stacks = b.whole(2, 2, kMaxCount);
@@ -114,7 +106,7 @@ Value sphere_(CallArgs& call) {
 Value torus_(CallArgs& call) {
   static const std::vector<Param> params = {required("R", kNumber), required("r", kNumber),
                                             optional("major", kNumber, Value::number(48)),
-                                            optional("minor", kNumber, Value::number(24)), crease_param(30)};
+                                            optional("minor", kNumber, Value::number(24)), crease_param()};
   const Bound b = call.bind(params);
   const double big = b.positive(0), small = b.positive(1);
   if (!(small < big)) b.fail(1, "must be below R (" + format_number(big) + "), got " + format_number(small));
