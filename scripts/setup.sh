@@ -6,7 +6,7 @@ packages=(
   build-essential cmake ninja-build pkg-config
   libcairo2-dev nlohmann-json3-dev tao-pegtl-dev libboost-program-options-dev
   libgtest-dev libgmock-dev libbenchmark-dev
-  poppler-utils
+  poppler-utils hp2xx librsvg2-bin
 )
 missing=()
 for p in "${packages[@]}"; do

@@ -2,9 +2,12 @@
 
 #include <algorithm>
 #include <array>
+#include <charconv>
 #include <cmath>
 #include <limits>
+#include <sstream>
 #include <string>
+#include <utility>
 
 #include "core/device/atomic_file.hpp"
 
@@ -39,6 +42,36 @@ bool equal_ignoring_case(std::string_view a, std::string_view b) {
 
 bool finite(Point2 p) { return std::isfinite(p.x) && std::isfinite(p.y); }
 
+bool is_digit(char c) { return c >= '0' && c <= '9'; }
+
+// digits [ "." digits ] at the front of `text`, consumed. Too many digits for a double reads as infinity,
+// so check_page_spec() reports the size rather than the spelling.
+std::optional<double> take_decimal(std::string_view& text) {
+  std::size_t end = 0;
+  while (end < text.size() && is_digit(text[end])) ++end;
+  if (end == 0) return std::nullopt;
+  if (end < text.size() && text[end] == '.') {
+    std::size_t frac = end + 1;
+    while (frac < text.size() && is_digit(text[frac])) ++frac;
+    if (frac == end + 1) return std::nullopt;
+    end = frac;
+  }
+  double value = 0;
+  const auto [ptr, ec] = std::from_chars(text.data(), text.data() + end, value, std::chars_format::fixed);
+  if (ec == std::errc::result_out_of_range)
+    value = std::numeric_limits<double>::infinity();
+  else if (ec != std::errc{} || ptr != text.data() + end)
+    return std::nullopt;
+  text.remove_prefix(end);
+  return value;
+}
+
+std::string mm(double v) {
+  std::ostringstream s;
+  s << v;
+  return s.str();
+}
+
 }  // namespace
 
 std::optional<Paper> paper_by_name(std::string_view name, bool landscape) {
@@ -47,6 +80,18 @@ std::optional<Paper> paper_by_name(std::string_view name, bool landscape) {
     return landscape ? Paper{p.long_mm, p.short_mm} : Paper{p.short_mm, p.long_mm};
   }
   return std::nullopt;
+}
+
+std::optional<Paper> parse_paper(std::string_view text, bool landscape) {
+  if (auto named = paper_by_name(text, landscape)) return named;
+  const std::optional<double> w = take_decimal(text);
+  if (!w || text.empty() || (text.front() != 'x' && text.front() != 'X')) return std::nullopt;
+  text.remove_prefix(1);
+  const std::optional<double> h = take_decimal(text);
+  if (!h || !(text.empty() || equal_ignoring_case(text, "mm"))) return std::nullopt;
+  Paper p{*w, *h};
+  if (landscape ? p.width_mm < p.height_mm : p.width_mm > p.height_mm) std::swap(p.width_mm, p.height_mm);
+  return p;
 }
 
 const std::vector<std::string_view>& paper_names() {
@@ -72,12 +117,16 @@ Rect2 drawing_extent(const std::optional<Rect2>& frame, const std::vector<Visibl
 void check_page_spec(const PageSpec& spec) {
   const double w = spec.paper.width_mm, h = spec.paper.height_mm, m = spec.margin_mm;
   if (!(std::isfinite(w) && std::isfinite(h) && w > 0 && h > 0))
-    throw DeviceError("paper size must be finite and positive, got " + std::to_string(w) + " x " +
-                      std::to_string(h) + " mm");
+    throw DeviceError("paper size must be finite and positive, got " + mm(w) + " x " + mm(h) + " mm");
+  if (w > kMaxPaperSideMm || h > kMaxPaperSideMm)
+    throw DeviceError("paper size " + mm(w) + " x " + mm(h) + " mm is too large: each side must be at most " +
+                      mm(kMaxPaperSideMm) + " mm (10 m)");
   if (!(std::isfinite(m) && m >= 0 && w - 2 * m > 0 && h - 2 * m > 0))
-    throw DeviceError("margin of " + std::to_string(m) + " mm leaves no room on a " + std::to_string(w) +
-                      " x " + std::to_string(h) +
+    throw DeviceError("margin of " + mm(m) + " mm leaves no room on a " + mm(w) + " x " + mm(h) +
                       " mm page; use a margin from 0 to under half the shorter side");
+  if (spec.mm_per_unit && !(std::isfinite(*spec.mm_per_unit) && *spec.mm_per_unit > 0))
+    throw DeviceError("the drawing scale must be finite and positive, got " + mm(*spec.mm_per_unit) +
+                      " mm per unit");
 }
 
 PageLayout fit_rect_to_page(const Rect2& extent, const PageSpec& spec) {
@@ -88,9 +137,12 @@ PageLayout fit_rect_to_page(const Rect2& extent, const PageSpec& spec) {
   PageLayout layout;
   layout.page_width_mm = w;
   layout.page_height_mm = h;
+  if (spec.mm_per_unit) layout.scale = *spec.mm_per_unit;
   if (extent.empty() || !std::isfinite(extent.xmin) || !std::isfinite(extent.xmax) ||
       !std::isfinite(extent.ymin) || !std::isfinite(extent.ymax))
-    return layout;  // nothing to fit: scale 1 about the picture origin
+    return layout;  // nothing to fit: the picture origin at the centre, scale 1 unless given
+  layout.picture_centre = {0.5 * extent.xmin + 0.5 * extent.xmax, 0.5 * extent.ymin + 0.5 * extent.ymax};
+  if (spec.mm_per_unit) return layout;
 
   // A zero side puts no limit on the scale; a single point has no size to fit and keeps scale 1.
   constexpr double kUnlimited = std::numeric_limits<double>::infinity();
@@ -98,7 +150,6 @@ PageLayout fit_rect_to_page(const Rect2& extent, const PageSpec& spec) {
   const double sx = ew > 0 ? room_w / ew : kUnlimited, sy = eh > 0 ? room_h / eh : kUnlimited;
   const double scale = std::min(sx, sy);
   layout.scale = scale < kUnlimited ? scale : 1;
-  layout.picture_centre = {0.5 * extent.xmin + 0.5 * extent.xmax, 0.5 * extent.ymin + 0.5 * extent.ymax};
   return layout;
 }
 

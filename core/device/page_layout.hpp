@@ -4,8 +4,9 @@
 // Page coordinates are millimetres from the page's top-left corner with y growing downwards, as PDF and
 // SVG draw; picture coordinates grow upwards, so the mapping flips y. The drawing (the camera frame when
 // there is one, else the bounds of the pieces) is fitted into the page minus its margins with one
-// uniform scale and centred. A caption, when a device prints one, lives in the bottom margin and does
-// not move the drawing.
+// uniform scale and centred, unless the page spec fixes the scale (PageSpec::mm_per_unit): then the
+// drawing is only centred. A caption, when a device prints one, lives in the bottom margin and does not
+// move the drawing.
 #pragma once
 
 #include <optional>
@@ -29,9 +30,29 @@ std::optional<Paper> paper_by_name(std::string_view name, bool landscape = false
 // The accepted names in their canonical spelling, for error messages.
 const std::vector<std::string_view>& paper_names();
 
+// A paper_by_name() name or a custom size "WxH" in millimetres ("300x200", "300x200mm", "215.9X279.4MM"):
+// plain decimal numbers, no sign, exponent or spaces. Named and custom sizes follow the same rule: the
+// sheet is turned so that width ≥ height when `landscape`, width ≤ height otherwise ("300x200" in
+// portrait is 200 × 300 mm; a square sheet is unchanged). Only the spelling is checked here: nullopt for
+// an unknown name or malformed size; zero or oversized sheets parse and are rejected by check_page_spec().
+std::optional<Paper> parse_paper(std::string_view text, bool landscape);
+
+// The largest sheet side check_page_spec() accepts (10 m: far beyond any plotter, well inside cairo).
+constexpr double kMaxPaperSideMm = 10000;
+
 struct PageSpec {
+  // A constructor rather than an aggregate, so that {paper, margin} leaves the scale unset without
+  // -Wmissing-field-initializers.
+  constexpr PageSpec(Paper paper_ = {}, double margin_mm_ = 12,
+                     std::optional<double> mm_per_unit_ = std::nullopt)
+      : paper(paper_), margin_mm(margin_mm_), mm_per_unit(mm_per_unit_) {}
+
   Paper paper;
   double margin_mm = 12;  // on all four sides
+  // When set, the drawing is not fitted: 1 picture unit is this many millimetres on the page, and the
+  // extent is centred on the page (a drawing larger than the room between the margins runs into the
+  // margins or off the sheet). Must be finite and positive.
+  std::optional<double> mm_per_unit;
 };
 
 struct PageLayout {
@@ -49,13 +70,15 @@ struct PageLayout {
   Point2 origin() const { return to_page_mm(Point2{0, 0}); }
 };
 
-// Throws DeviceError naming the problem when the paper is not finite and positive or the margins leave
-// no room; devices call it before creating any file.
+// Throws DeviceError naming the problem when the paper is not finite and positive (or has a side over
+// kMaxPaperSideMm), the margins leave no room, or an explicit mm_per_unit is not finite and positive;
+// devices call it before creating any file.
 void check_page_spec(const PageSpec& spec);
 
 // Fits `extent` into the page. An empty extent (nothing to draw) maps the picture origin to the page
 // centre at scale 1; a degenerate one (a point, a line) is fitted along its non-zero side, and a point
-// lands at the centre. Throws as check_page_spec() does.
+// lands at the centre. With spec.mm_per_unit the scale is that value for every extent (empty included)
+// and the extent's centre lands on the page centre. Throws as check_page_spec() does.
 PageLayout fit_rect_to_page(const Rect2& extent, const PageSpec& spec);
 
 // The extent a device fits: `frame` when present, else the bounds of the pieces' picture end points.

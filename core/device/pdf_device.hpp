@@ -1,23 +1,18 @@
 // PDF through cairo: one page per frame, the drawing fitted and centred on the paper with one uniform
 // scale (core/device/page_layout.hpp, shared with the JSON device), hidden pieces dashed.
+//
+// Superseded by core/device/cairo_device.hpp (PDF, SVG and PNG from PlotPages); kept only until the
+// runtime switches over, then deleted. DrawingPage now lives in core/device/drawing_page.hpp.
 #pragma once
 
 #include <filesystem>
-#include <optional>
 #include <string>
 #include <vector>
 
+#include "core/device/drawing_page.hpp"
 #include "core/device/page_layout.hpp"
-#include "core/geometry/rect2.hpp"
-#include "core/hlr/visible_segment.hpp"
 
 namespace hlr {
-
-struct DrawingPage {
-  std::vector<VisibleSegment> segments;
-  std::optional<Rect2> frame;  // drawn as a border and used for fitting when present
-  std::string caption;         // printed in the bottom margin
-};
 
 struct PdfOptions {
   double page_width_mm = 297;  // A4 landscape

@@ -127,6 +127,67 @@ TEST(PageLayout, BadSpecsAreDeviceErrors) {
   EXPECT_NO_THROW(check_page_spec(PageSpec{{297, 210}, 104.9}));
 }
 
+// A fixed scale centres the extent instead of fitting it: [2, 6] × [1, 2] at 10 mm per unit.
+TEST(PageLayout, ExplicitScaleCentresWithoutFitting) {
+  PageSpec spec = kA4Landscape;
+  spec.mm_per_unit = 10;
+  const std::vector<VisibleSegment> segments{piece({2, 1}, {6, 2})};
+  const PageLayout l = fit_to_page(std::nullopt, segments, spec);
+  EXPECT_EQ(l.scale, 10);
+  expect_point(l.to_page_mm({4, 1.5}), {148.5, 105});
+  expect_point(l.to_page_mm({2, 1}), {128.5, 110});
+  expect_point(l.to_page_mm({6, 2}), {168.5, 100});
+  // The frame still wins and is centred; its size does not matter.
+  const PageLayout framed = fit_to_page(Rect2{-1, -1, 1, 1}, segments, spec);
+  EXPECT_EQ(framed.scale, 10);
+  expect_point(framed.to_page_mm({1, 1}), {158.5, 95});
+  // Too large for the page: kept, running off the sheet.
+  spec.mm_per_unit = 1000;
+  const PageLayout big = fit_rect_to_page(Rect2{-1, -1, 1, 1}, spec);
+  EXPECT_EQ(big.scale, 1000);
+  expect_point(big.to_page_mm({-1, 1}), {-851.5, -895});
+  // Nothing to draw: the picture origin at the centre, at the given scale.
+  spec.mm_per_unit = 2.5;
+  const PageLayout empty = fit_to_page(std::nullopt, {}, spec);
+  EXPECT_EQ(empty.scale, 2.5);
+  expect_point(empty.to_page_mm({0, 0}), {148.5, 105});
+  expect_point(empty.to_page_mm({2, 2}), {153.5, 100});
+  // A point lands at the centre.
+  const PageLayout dot = fit_to_page(std::nullopt, {piece({3, 4}, {3, 4})}, spec);
+  EXPECT_EQ(dot.scale, 2.5);
+  expect_point(dot.to_page_mm({3, 4}), {148.5, 105});
+}
+
+TEST(PageLayout, BadExplicitScaleIsADeviceError) {
+  const double nan = std::numeric_limits<double>::quiet_NaN(), inf = std::numeric_limits<double>::infinity();
+  for (const double bad : {0.0, -1.0, -0.0, nan, inf, -inf}) {
+    PageSpec spec = kA4Landscape;
+    spec.mm_per_unit = bad;
+    try {
+      fit_rect_to_page(Rect2{-1, -1, 1, 1}, spec);
+      ADD_FAILURE() << "no error for " << bad;
+    } catch (const DeviceError& e) {
+      EXPECT_NE(std::string(e.what()).find("scale"), std::string::npos) << e.what();
+    }
+  }
+  PageSpec tiny = kA4Landscape;
+  tiny.mm_per_unit = 1e-9;
+  EXPECT_NO_THROW(check_page_spec(tiny));
+}
+
+TEST(PageLayout, PaperSidesUpToTenMetres) {
+  EXPECT_NO_THROW(check_page_spec(PageSpec{{kMaxPaperSideMm, kMaxPaperSideMm}, 0}));
+  EXPECT_NO_THROW(check_page_spec(PageSpec{{10000, 5}, 0}));
+  for (const Paper& bad : {Paper{10000.001, 200}, Paper{200, 1e9}, Paper{1e300, 1e300}}) {
+    try {
+      check_page_spec(PageSpec{bad, 0});
+      ADD_FAILURE() << "no error for " << bad.width_mm << " x " << bad.height_mm;
+    } catch (const DeviceError& e) {
+      EXPECT_NE(std::string(e.what()).find("too large"), std::string::npos) << e.what();
+    }
+  }
+}
+
 struct NamedSize {
   const char* name;
   double width_mm, height_mm;  // portrait
@@ -186,6 +247,73 @@ TEST(PaperByName, DefaultPaperIsA4Landscape) {
   const auto a4 = paper_by_name("A4", true);
   EXPECT_EQ(p.width_mm, a4->width_mm);
   EXPECT_EQ(p.height_mm, a4->height_mm);
+}
+
+TEST(ParsePaper, NamesFollowPaperByName) {
+  for (const std::string_view name : paper_names()) {
+    for (const bool landscape : {false, true}) {
+      const auto parsed = parse_paper(name, landscape), named = paper_by_name(name, landscape);
+      ASSERT_TRUE(parsed) << name;
+      EXPECT_EQ(parsed->width_mm, named->width_mm) << name;
+      EXPECT_EQ(parsed->height_mm, named->height_mm) << name;
+    }
+  }
+  const auto a3 = parse_paper("a3", true);
+  ASSERT_TRUE(a3);
+  EXPECT_EQ(a3->width_mm, 420);
+  EXPECT_EQ(a3->height_mm, 297);
+}
+
+// Custom sizes turn like named ones: width ≥ height in landscape, width ≤ height in portrait.
+TEST(ParsePaper, CustomSizesInMillimetres) {
+  struct Case {
+    const char* text;
+    bool landscape;
+    double width_mm, height_mm;
+  };
+  const Case cases[] = {
+      {"300x200", true, 300, 200},    {"300x200", false, 200, 300},
+      {"200x300", true, 300, 200},    {"200x300", false, 200, 300},
+      {"300x200mm", true, 300, 200},  {"300X200MM", true, 300, 200},
+      {"300x200Mm", false, 200, 300}, {"215.9x279.4", false, 215.9, 279.4},
+      {"250x250", true, 250, 250},    {"250x250", false, 250, 250},
+      {"0.5x7", true, 7, 0.5},        {"007x0010.250mm", false, 7, 10.25},
+  };
+  for (const Case& c : cases) {
+    const auto p = parse_paper(c.text, c.landscape);
+    ASSERT_TRUE(p) << c.text;
+    EXPECT_DOUBLE_EQ(p->width_mm, c.width_mm) << c.text << " landscape " << c.landscape;
+    EXPECT_DOUBLE_EQ(p->height_mm, c.height_mm) << c.text << " landscape " << c.landscape;
+  }
+}
+
+TEST(ParsePaper, MalformedSizes) {
+  for (const char* text :
+       {"",          "x",        "300",       "300x",     "x200",       "300x200x100", "300 x 200",
+        " 300x200",  "300x200 ", "300x200cm", "300x200m", "300x200mmm", "300*200",     "300×200",
+        "-300x200",  "+300x200", "300x-200",  "3e2x200",  "300.x200",   "300x.5",      ".5x200",
+        "300,5x200", "infx200",  "nanxnan",   "0x1e3",    "300x200in",  "A4x",         "A4 landscape"}) {
+    EXPECT_FALSE(parse_paper(text, true)) << '"' << text << '"';
+    EXPECT_FALSE(parse_paper(text, false)) << '"' << text << '"';
+  }
+  EXPECT_FALSE(parse_paper(std::string_view("300x200\0", 8), true));
+}
+
+// The parser checks spelling only; sizes are checked with the rest of the page.
+TEST(ParsePaper, SizesAreCheckedByCheckPageSpec) {
+  const auto zero = parse_paper("0x200", true);
+  ASSERT_TRUE(zero);
+  EXPECT_THROW(check_page_spec(PageSpec{*zero, 0}), DeviceError);
+  const auto huge = parse_paper("20000x200", true);
+  ASSERT_TRUE(huge);
+  EXPECT_THROW(check_page_spec(PageSpec{*huge, 0}), DeviceError);
+  const auto limit = parse_paper("10000x10000mm", false);
+  ASSERT_TRUE(limit);
+  EXPECT_NO_THROW(check_page_spec(PageSpec{*limit, 12}));
+  // More digits than a double holds: infinity, a size error rather than a spelling one.
+  const auto endless = parse_paper(std::string(400, '9') + "x200", true);
+  ASSERT_TRUE(endless);
+  EXPECT_THROW(check_page_spec(PageSpec{*endless, 0}), DeviceError);
 }
 
 }  // namespace

@@ -1,0 +1,320 @@
+#include "core/device/cairo_device.hpp"
+
+#include <cairo-pdf.h>
+#include <cairo-svg.h>
+#include <cairo.h>
+
+#include <algorithm>
+#include <cmath>
+#include <span>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+
+#include "core/device/atomic_file.hpp"
+#include "core/device/page_layout.hpp"
+
+namespace hlr {
+namespace {
+
+constexpr double kMmPerInch = 25.4;
+constexpr double kPointsPerMm = 72.0 / kMmPerInch;
+constexpr double kDashMm = 2, kGapMm = 1.2;
+constexpr double kBorderGrey = 0.5;
+constexpr double kCaptionPt = 10;
+// Strokes are clipped to the page grown by this much (plus the widest pen), so that caps at the edge
+// are drawn whole and cairo never sees coordinates beyond its fixed-point range.
+constexpr double kClipPadMm = 10;
+
+std::string number(double v) {
+  std::ostringstream s;
+  s << v;
+  return s.str();
+}
+
+const char* format_name(CairoFormat f) {
+  switch (f) {
+    case CairoFormat::Pdf:
+      return "PDF";
+    case CairoFormat::Svg:
+      return "SVG";
+    case CairoFormat::Png:
+      return "PNG";
+  }
+  return "?";
+}
+
+// Owners, so that an exception part-way never leaks a surface or context.
+struct SurfaceRef {
+  cairo_surface_t* p;
+  ~SurfaceRef() { cairo_surface_destroy(p); }
+};
+struct ContextRef {
+  cairo_t* p;
+  ~ContextRef() { cairo_destroy(p); }
+};
+
+void check(cairo_status_t status) {
+  if (status != CAIRO_STATUS_SUCCESS)
+    throw std::runtime_error(std::string("cairo: ") + cairo_status_to_string(status));
+}
+
+// Everything that can be wrong with the input is found before any file exists.
+void validate(const std::vector<PlotPage>& pages, const CairoOptions& o) {
+  if (pages.empty()) throw DeviceError("nothing to draw: no pages");
+  if (o.format != CairoFormat::Pdf && pages.size() > 1)
+    throw DeviceError(std::string("a ") + format_name(o.format) + " file holds one page, got " +
+                      std::to_string(pages.size()) +
+                      "; put a {frame} pattern in the output name to write one file per frame");
+  for (std::size_t i = 0; i < pages.size(); ++i) {
+    const PlotPage& page = pages[i];
+    const std::string where = pages.size() > 1 ? "page " + std::to_string(i + 1) + ": " : "";
+    try {
+      check_page_spec(PageSpec{{page.width_mm, page.height_mm}, page.margin_mm});
+    } catch (const DeviceError& e) {
+      throw DeviceError(where + e.what());
+    }
+    for (std::size_t s = 0; s < page.strokes.size(); ++s)
+      for (const Point2& p : page.strokes[s].points)
+        if (!std::isfinite(p.x) || !std::isfinite(p.y))
+          throw DeviceError(where + "stroke " + std::to_string(s + 1) + " has a non-finite point");
+    if (o.format == CairoFormat::Png) (void)png_pixel_size(page, o.dpi);
+  }
+}
+
+// Liang–Barsky: clips the segment a→b to `box`, false when nothing of it is inside.
+bool clip_segment(Point2& a, Point2& b, const Rect2& box) {
+  double t0 = 0, t1 = 1;
+  const double dx = b.x - a.x, dy = b.y - a.y;
+  const double p[] = {-dx, dx, -dy, dy};
+  const double q[] = {a.x - box.xmin, box.xmax - a.x, a.y - box.ymin, box.ymax - a.y};
+  for (int i = 0; i < 4; ++i) {
+    if (p[i] == 0) {
+      if (q[i] < 0) return false;
+      continue;
+    }
+    const double t = q[i] / p[i];
+    if (p[i] < 0)
+      t0 = std::max(t0, t);
+    else
+      t1 = std::min(t1, t);
+    if (t0 > t1) return false;
+  }
+  const Point2 a0 = a;
+  if (t0 > 0) a = {a0.x + t0 * dx, a0.y + t0 * dy};
+  if (t1 < 1) b = {a0.x + t1 * dx, a0.y + t1 * dy};
+  return true;
+}
+
+// Adds one stroke to the current path, clipped to `box`; a stroke leaving and re-entering the box
+// becomes several subpaths.
+void add_stroke(cairo_t* cr, const PlotStroke& stroke, const Rect2& box) {
+  const std::vector<Point2>& pts = stroke.points;
+  if (pts.empty()) return;
+  if (pts.size() == 1) {  // a dot: round caps draw a zero-length line as one
+    if (!box.contains(pts[0])) return;
+    cairo_move_to(cr, pts[0].x, pts[0].y);
+    cairo_line_to(cr, pts[0].x, pts[0].y);
+    return;
+  }
+  bool drawing = false;  // the path's current point is the end of the previous (clipped) piece
+  for (std::size_t i = 1; i < pts.size(); ++i) {
+    Point2 a = pts[i - 1], b = pts[i];
+    if (!clip_segment(a, b, box)) {
+      drawing = false;
+      continue;
+    }
+    const bool entered = a.x != pts[i - 1].x || a.y != pts[i - 1].y;
+    if (!drawing || entered) cairo_move_to(cr, a.x, a.y);
+    cairo_line_to(cr, b.x, b.y);
+    drawing = b.x == pts[i].x && b.y == pts[i].y;
+  }
+}
+
+// The caption as valid UTF-8 (cairo fails the whole surface on a bad string): bad bytes become '?'.
+std::string valid_utf8(const std::string& s) {
+  std::string out;
+  for (std::size_t i = 0; i < s.size();) {
+    const auto c = static_cast<unsigned char>(s[i]);
+    const std::size_t n = c < 0x80 ? 1 : (c >> 5) == 0x6 ? 2 : (c >> 4) == 0xe ? 3 : (c >> 3) == 0x1e ? 4 : 0;
+    bool ok = n > 0 && i + n <= s.size() && c != 0;
+    for (std::size_t k = 1; ok && k < n; ++k) ok = (static_cast<unsigned char>(s[i + k]) & 0xc0) == 0x80;
+    if (ok && n > 1) {  // no overlong forms, surrogates or code points past U+10FFFF
+      unsigned cp = c & (0xff >> (n + 1));
+      for (std::size_t k = 1; k < n; ++k) cp = (cp << 6) | (static_cast<unsigned char>(s[i + k]) & 0x3f);
+      const unsigned min[] = {0, 0, 0x80, 0x800, 0x10000};
+      ok = cp >= min[n] && cp <= 0x10ffff && !(cp >= 0xd800 && cp <= 0xdfff);
+    }
+    if (ok) {
+      out.append(s, i, n);
+      i += n;
+    } else {
+      out += '?';
+      ++i;
+    }
+  }
+  return out;
+}
+
+// Draws one page on a context whose user unit is `units_per_mm` device units, then leaves the context
+// as it found it.
+void draw_page(cairo_t* cr, const PlotPage& page, const CairoOptions& o, double units_per_mm) {
+  cairo_save(cr);
+  cairo_scale(cr, units_per_mm, units_per_mm);
+  cairo_set_line_cap(cr, CAIRO_LINE_CAP_ROUND);
+  cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
+
+  if (o.decorations && page.border && !page.border->empty()) {
+    const Rect2& b = *page.border;
+    cairo_set_source_rgb(cr, kBorderGrey, kBorderGrey, kBorderGrey);
+    cairo_set_line_width(cr, 0.5 * o.pens.default_width_mm());
+    cairo_rectangle(cr, b.xmin, b.ymin, b.width(), b.height());
+    cairo_stroke(cr);
+  }
+
+  double widest = 0;
+  for (const PlotStroke& s : page.strokes) widest = std::max(widest, o.pens.style(s.pen).width_mm);
+  const double pad = kClipPadMm + widest;
+  const Rect2 box{-pad, -pad, page.width_mm + pad, page.height_mm + pad};
+
+  // Consecutive strokes of one pen and layer share a path: the same picture (dashes restart on every
+  // subpath), smaller files.
+  const std::vector<PlotStroke>& strokes = page.strokes;
+  for (std::size_t i = 0; i < strokes.size();) {
+    const int pen = strokes[i].pen;
+    const StrokeLayer layer = strokes[i].layer;
+    const PenStyle style = o.pens.style(pen);
+    cairo_set_source_rgb(cr, style.r, style.g, style.b);
+    cairo_set_line_width(cr, style.width_mm);
+    if (layer == StrokeLayer::Hidden) {
+      // Round caps lengthen each dash by the width: shorten the dashes and widen the gaps to match.
+      const double dash[] = {std::max(0.0, kDashMm - style.width_mm), kGapMm + style.width_mm};
+      cairo_set_dash(cr, dash, 2, 0);
+    } else {
+      cairo_set_dash(cr, nullptr, 0, 0);
+    }
+    for (; i < strokes.size() && strokes[i].pen == pen && strokes[i].layer == layer; ++i)
+      add_stroke(cr, strokes[i], box);
+    cairo_stroke(cr);
+  }
+  cairo_set_dash(cr, nullptr, 0, 0);
+
+  if (o.decorations && !page.caption.empty()) {
+    // In the bottom margin, so a caption never moves the drawing.
+    cairo_set_source_rgb(cr, 0, 0, 0);
+    cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
+    cairo_set_font_size(cr, kCaptionPt / kPointsPerMm);
+    cairo_move_to(cr, page.margin_mm, page.height_mm - 0.6 * page.margin_mm);
+    cairo_show_text(cr, valid_utf8(page.caption).c_str());
+  }
+  cairo_restore(cr);
+}
+
+// Draws every page on `surface` (one show_page each), finishes it and throws on any cairo error.
+// `before_page` runs before each page is drawn (the PDF sets the page size there).
+template <typename BeforePage>
+void draw_all(cairo_surface_t* surface, std::span<const PlotPage> pages, const CairoOptions& o,
+              double units_per_mm, BeforePage before_page) {
+  check(cairo_surface_status(surface));
+  {
+    ContextRef cr{cairo_create(surface)};
+    for (const PlotPage& page : pages) {
+      before_page(cr.p, page);
+      draw_page(cr.p, page, o, units_per_mm);
+      if (o.format != CairoFormat::Png) cairo_show_page(cr.p);
+    }
+    check(cairo_status(cr.p));
+  }
+  if (o.format != CairoFormat::Png) {
+    cairo_surface_finish(surface);  // writes the file's tail; errors surface here
+    check(cairo_surface_status(surface));
+  }
+}
+
+void write_pdf_file(const std::filesystem::path& temp, const std::vector<PlotPage>& pages,
+                    const CairoOptions& o) {
+  SurfaceRef surface{cairo_pdf_surface_create(temp.c_str(), pages[0].width_mm * kPointsPerMm,
+                                              pages[0].height_mm * kPointsPerMm)};
+  check(cairo_surface_status(surface.p));
+  if (!o.title.empty()) cairo_pdf_surface_set_metadata(surface.p, CAIRO_PDF_METADATA_TITLE, o.title.c_str());
+  cairo_pdf_surface_set_metadata(surface.p, CAIRO_PDF_METADATA_CREATOR, "hlrscript");
+  draw_all(surface.p, pages, o, kPointsPerMm, [&](cairo_t*, const PlotPage& page) {
+    cairo_pdf_surface_set_size(surface.p, page.width_mm * kPointsPerMm, page.height_mm * kPointsPerMm);
+  });
+}
+
+void write_svg_file(const std::filesystem::path& temp, const PlotPage& page, const CairoOptions& o) {
+  // In cairo ≥ 1.16 the document unit makes the size given here millimetres and one user unit 1 mm.
+  SurfaceRef surface{cairo_svg_surface_create(temp.c_str(), page.width_mm, page.height_mm)};
+  check(cairo_surface_status(surface.p));
+  cairo_svg_surface_set_document_unit(surface.p, CAIRO_SVG_UNIT_MM);
+  draw_all(surface.p, std::span(&page, 1), o, 1, [](cairo_t*, const PlotPage&) {});
+}
+
+void write_png_file(const std::filesystem::path& temp, const PlotPage& page, const CairoOptions& o) {
+  const PixelSize size = png_pixel_size(page, o.dpi);
+  SurfaceRef surface{cairo_image_surface_create(CAIRO_FORMAT_ARGB32, static_cast<int>(size.width),
+                                                static_cast<int>(size.height))};
+  draw_all(surface.p, std::span(&page, 1), o, o.dpi / kMmPerInch, [&](cairo_t* cr, const PlotPage&) {
+    if (!o.white_background) return;  // a new image surface is transparent
+    cairo_set_source_rgb(cr, 1, 1, 1);
+    cairo_paint(cr);
+  });
+  cairo_surface_flush(surface.p);
+  check(cairo_surface_write_to_png(surface.p, temp.c_str()));
+}
+
+char lower(char c) { return c >= 'A' && c <= 'Z' ? static_cast<char>(c - 'A' + 'a') : c; }
+
+}  // namespace
+
+std::optional<CairoFormat> cairo_format_for(const std::filesystem::path& target) {
+  std::string ext = target.extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), lower);
+  if (ext == ".pdf") return CairoFormat::Pdf;
+  if (ext == ".svg") return CairoFormat::Svg;
+  if (ext == ".png") return CairoFormat::Png;
+  return std::nullopt;
+}
+
+PixelSize png_pixel_size(const PlotPage& page, double dpi) {
+  if (!(std::isfinite(dpi) && dpi > 0))
+    throw DeviceError("dpi must be finite and positive, got " + number(dpi));
+  const double w = page.width_mm * dpi / kMmPerInch, h = page.height_mm * dpi / kMmPerInch;
+  const double pw = std::max(1.0, std::round(w)), ph = std::max(1.0, std::round(h));
+  if (!(pw <= kMaxPngSide && ph <= kMaxPngSide && pw * ph <= kMaxPngMegapixels * 1e6)) {
+    // The largest dpi both limits allow on this page, rounded down to be safe.
+    const double by_side = kMaxPngSide * kMmPerInch / std::max(page.width_mm, page.height_mm);
+    const double by_area = std::sqrt(kMaxPngMegapixels * 1e6 / (page.width_mm * page.height_mm)) * kMmPerInch;
+    throw DeviceError("a " + number(page.width_mm) + " x " + number(page.height_mm) + " mm page at " +
+                      number(dpi) + " dpi is " + number(pw) + " x " + number(ph) +
+                      " pixels; PNG output is limited to " + number(kMaxPngMegapixels) + " megapixels and " +
+                      std::to_string(kMaxPngSide) + " pixels a side: lower the dpi to at most " +
+                      number(std::floor(0.999 * std::min(by_side, by_area))));
+  }
+  return {static_cast<long>(pw), static_cast<long>(ph)};
+}
+
+void write_cairo(const std::filesystem::path& target, const std::vector<PlotPage>& pages,
+                 const CairoOptions& o) {
+  try {
+    validate(pages, o);
+  } catch (const DeviceError& e) {
+    throw DeviceError("cannot write '" + target.string() + "': " + e.what());
+  }
+  write_atomically(target, [&](const std::filesystem::path& temp) {
+    switch (o.format) {
+      case CairoFormat::Pdf:
+        write_pdf_file(temp, pages, o);
+        break;
+      case CairoFormat::Svg:
+        write_svg_file(temp, pages[0], o);
+        break;
+      case CairoFormat::Png:
+        write_png_file(temp, pages[0], o);
+        break;
+    }
+  });
+}
+
+}  // namespace hlr
