@@ -1,0 +1,83 @@
+// Pen planning: turns the pieces of one page into strokes in plotting order (DESIGN.md "Pen planning").
+//
+// Pieces are snapped to the device grid, duplicates and overlapping collinear pieces merged, each
+// connected component drawn with the fewest strokes (Euler trails: max(1, odd/2)), and the strokes
+// ordered and oriented to cut pen-up travel. Pieces of different pens (or layers) are never joined;
+// pens are drawn one after another in increasing pen number, visible layer before hidden within a pen.
+#pragma once
+
+#include <cstddef>
+#include <vector>
+
+#include "core/device/plot_page.hpp"
+#include "core/geometry/vector.hpp"
+
+namespace hlr {
+
+// A straight piece in page millimetres (top-left origin, y down).
+struct PlotPiece {
+  Point2 a, b;
+  int pen = 1;
+  StrokeLayer layer = StrokeLayer::Visible;
+};
+
+enum class PenOrder {
+  None,       // file order: pieces as given, a piece starting where the previous ended continues its stroke
+  Greedy,     // Euler strokes, then nearest-endpoint ordering with reversal
+  Optimized,  // Euler strokes with matched odd vertices, greedy, then 2-opt / Or-opt within the budget
+};
+
+// The plotter's speeds, for the time estimate (defaults: a 7475A-class pen plotter).
+struct PlotterSpeeds {
+  double pen_down_mm_per_s = 380;
+  double pen_up_mm_per_s = 380;
+  double lift_s = 0.1;  // one pen-up plus pen-down
+};
+
+struct PlanOptions {
+  PenOrder order = PenOrder::Optimized;
+  double grid_mm = 0.025;     // endpoints snap to multiples of this (the device's plotter unit)
+  Point2 home{0, 0};          // the pen starts here and returns here (page mm)
+  double time_budget_ms = 200;  // for the improvement passes of Optimized, per page
+  PlotterSpeeds speeds;
+  // Greedy and Optimized: a piece is split at (joined to) every vertex within this many grid units of it
+  // that lies between its end points — T-junctions and overlapping, nearly collinear pieces that snapping
+  // moved apart. 0 joins only vertices exactly on the snapped piece. See core/plan/pen_graph.hpp.
+  double merge_tolerance_grid = 1.0;
+};
+
+struct PlanStats {
+  std::size_t pieces = 0;         // pieces given
+  std::size_t merged_pieces = 0;  // edges of the drawing graph after snapping and merging
+  double pen_down_mm = 0;
+  double pen_up_mm = 0;  // home → first stroke, between strokes, last stroke → home
+  double pen_up_mean_mm = 0;    // over the pen-up moves (strokes + 1 of them; 0 when there is no stroke)
+  double pen_up_median_mm = 0;
+  std::size_t lifts = 0;        // strokes drawn
+  std::size_t lift_lower_bound = 0;  // sum over components of max(1, odd/2), per pen and layer
+  double plot_seconds = 0;      // pen_down/v_down + pen_up/v_up + lifts·lift_s
+  double planning_ms = 0;
+  std::size_t dropped_pieces = 0;  // zero length on the grid, not finite, or beyond ±2^29 grid units
+  std::size_t components = 0;      // of the drawing graphs, summed over pens and layers
+  std::size_t odd_vertices = 0;
+  std::size_t improvement_moves = 0;  // Optimized: improving 2-opt / Or-opt / re-entry moves applied
+  bool kept_greedy = false;           // Optimized: the greedy plan was shorter and was kept
+  bool budget_exhausted = false;      // Optimized: the clock (time_budget_ms) stopped the improvement
+};
+
+struct PenPlan {
+  std::vector<PlotStroke> strokes;  // in plotting order
+  PlanStats stats;
+};
+
+// Throws std::invalid_argument when options.grid_mm is not finite and positive. Pieces that are not finite,
+// lie beyond ±2^29 grid units, or snap to a point are dropped (stats.dropped_pieces). Strokes' points are
+// grid points (multiples of grid_mm). None keeps the snapped pieces in file order within each pen and
+// layer, joining a piece to the previous one when it starts where that one ended. Greedy and Optimized
+// draw every edge of the merged drawing graph exactly once, with lifts == lift_lower_bound, dropping a
+// stroke's middle point only where the two grid segments meeting there are exactly collinear.
+// Optimized is deterministic unless time_budget_ms runs out first (stats.budget_exhausted); its work is
+// otherwise capped in proportion to the stroke count.
+PenPlan plan_pen_strokes(const std::vector<PlotPiece>& pieces, const PlanOptions& options = {});
+
+}  // namespace hlr
