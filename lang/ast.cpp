@@ -2,6 +2,7 @@
 #include "lang/ast.hpp"
 
 #include <charconv>
+#include <iterator>
 #include <string>
 
 #include "lang/overloaded.hpp"
@@ -79,20 +80,23 @@ std::string block_text(const Block& block) {
   return out + ")";
 }
 
-std::string paper_text(const PaperSpec& paper) {
-  std::string out;
-  if (paper.size) out += " " + paper.size->text;
-  if (paper.orientation == Orientation::Landscape) out += " landscape";
-  if (paper.orientation == Orientation::Portrait) out += " portrait";
-  return out;
-}
-
-// " a k:v ..." for call arguments and solid options.
+// " a k:v ..." for call arguments, solid, paper and pen options, plotter entries.
 std::string arguments_text(const std::vector<Argument>& args) {
   std::string out;
   for (const auto& arg : args) out += " " + (arg.label ? arg.label->text + ":" : "") + dump(*arg.value);
   return out;
 }
+
+std::string paper_text(const PaperSpec& paper) {
+  std::string out;
+  if (paper.size) out += " " + paper.size->text;
+  if (paper.orientation == Orientation::Landscape) out += " landscape";
+  if (paper.orientation == Orientation::Portrait) out += " portrait";
+  if (!paper.options.empty()) out += " (options" + arguments_text(paper.options) + ")";
+  return out;
+}
+
+std::string pen_text(const std::optional<PenClause>& pen) { return pen ? " pen " + dump(*pen->number) : ""; }
 
 std::string item_text(const SolidItem& item) {
   return std::visit(
@@ -186,16 +190,28 @@ std::string dump(const Stmt& stmt) {
             return out + ")";
           },
           [](const DrawStmt& s) {
-            return "(draw " + dump(*s.object) + (s.transform ? " at " + dump(*s.transform) : "") + ")";
+            return "(draw " + dump(*s.object) + (s.transform ? " at " + dump(*s.transform) : "") +
+                   pen_text(s.pen) + ")";
           },
           [](const CameraStmt& s) { return "(camera " + s.name.text + " " + dump(*s.value) + ")"; },
           [](const AnimateStmt& s) {
             return "(animate " + dump(*s.frames) + (s.fps ? " fps " + dump(*s.fps) : "") + ")";
           },
-          [](const OutputStmt& s) { return "(output " + dump(*s.pattern) + paper_text(s.paper) + ")"; },
+          [](const OutputStmt& s) {
+            return "(output " + dump(*s.pattern) + paper_text(s.paper) +
+                   (s.plotter ? " plotter " + s.plotter->text : "") + ")";
+          },
           [](const PaperStmt& s) { return "(paper" + paper_text(s.paper) + ")"; },
-          [](const StyleStmt& s) { return "(style " + s.property.text + " " + s.value.text + ")"; },
+          [](const StyleStmt& s) {
+            return "(style " + s.property.text + " " + s.value.text + pen_text(s.pen) + ")";
+          },
           [](const IncludeStmt& s) { return "(include " + quoted(s.path) + ")"; },
+          [](const PenStmt& s) {
+            return "(pen " + dump(*s.number) + " (options" + arguments_text(s.options) + "))";
+          },
+          [](const PlotterStmt& s) {
+            return "(plotter " + s.name.text + " (entries" + arguments_text(s.entries) + "))";
+          },
       },
       stmt.node);
 }
@@ -207,8 +223,10 @@ std::string dump(const Script& script) {
 }
 
 const char* statement_keyword(const Stmt& stmt) {
-  static constexpr const char* names[] = {"solid",  "let",     "def",    "return", "for",   "if",     "draw",
-                                          "camera", "animate", "output", "paper",  "style", "include"};
+  static constexpr const char* names[] = {"solid", "let",   "def",     "return",  "for",
+                                          "if",    "draw",  "camera",  "animate", "output",
+                                          "paper", "style", "include", "pen",     "plotter"};
+  static_assert(std::size(names) == std::variant_size_v<decltype(Stmt::node)>);
   return names[stmt.node.index()];
 }
 

@@ -185,9 +185,15 @@ struct IfStmt {
   Block then_block;
   std::optional<Block> else_block;  // `else if` is an else block holding one IfStmt
 };
-struct DrawStmt {
+// `pen N` after a draw or `style hidden dashed`.
+struct PenClause {
+  ExprPtr number;
+  SourceSpan span;  // from `pen` to the end of N
+};
+struct DrawStmt {  // draw EXPR [at EXPR] [pen N]
   ExprPtr object;
   ExprPtr transform;  // after `at`; null when absent
+  std::optional<PenClause> pen;
 };
 struct CameraStmt {
   Name name;
@@ -198,29 +204,42 @@ struct AnimateStmt {  // animate frames N [fps F]
   ExprPtr fps;  // null when absent
 };
 struct PaperSpec {
-  std::optional<Name> size;  // "A4", "letter", ... as written
+  std::optional<Name> size;  // "A4", "letter", "custom", ... as written
   Orientation orientation = Orientation::Unspecified;
+  std::vector<Argument> options;  // (margin: 10, scale: 0.5, width: .., height: ..) as written
 };
-struct OutputStmt {  // output "pattern-{frame:03}.pdf" [paper SIZE] [landscape|portrait]
-  ExprPtr pattern;   // a StringLit expression
+// output "pattern-{frame:03}.pdf" [paper SIZE [landscape|portrait] [(OPTIONS)] | landscape|portrait]
+//        [plotter NAME]
+struct OutputStmt {
+  ExprPtr pattern;  // a StringLit expression
+  PaperSpec paper;
+  std::optional<Name> plotter;  // a name, or a plain string's text (its span includes the quotes)
+};
+struct PaperStmt {  // paper SIZE [landscape|portrait] [(OPTIONS)]
   PaperSpec paper;
 };
-struct PaperStmt {  // paper SIZE [landscape|portrait]
-  PaperSpec paper;
-};
-struct StyleStmt {  // style hidden dashed|off
+struct StyleStmt {  // style hidden dashed|off [pen N]
   Name property;    // "hidden"
   Name value;       // "dashed" or "off"
+  std::optional<PenClause> pen;
 };
 struct IncludeStmt {  // include "file.hls"
   std::string path;
   SourceSpan path_span;
 };
+struct PenStmt {  // pen N (colour: "red", width: 0.35)
+  ExprPtr number;
+  std::vector<Argument> options;  // as written; the runtime checks them
+};
+struct PlotterStmt {  // plotter NAME { KEY: EXPR ... }
+  Name name;
+  std::vector<Argument> entries;  // each labelled with its key, as written
+};
 
 struct Stmt {
   SourceSpan span;
   std::variant<SolidStmt, LetStmt, DefStmt, ReturnStmt, ForStmt, IfStmt, DrawStmt, CameraStmt, AnimateStmt,
-               OutputStmt, PaperStmt, StyleStmt, IncludeStmt>
+               OutputStmt, PaperStmt, StyleStmt, IncludeStmt, PenStmt, PlotterStmt>
       node;
 };
 
@@ -233,7 +252,7 @@ struct Script {
 
 const char* to_string(UnaryOp op);                // "-", "not"
 const char* to_string(BinaryOp op);               // "then", "+", "..", ...
-const char* statement_keyword(const Stmt& stmt);  // "solid", "let", ...
+const char* statement_keyword(const Stmt& stmt);  // "solid", "let", ..., "pen", "plotter"
 
 // A compact S-expression of a node, e.g. (draw (call post (+ 1 i)) (call translate (* 2 i) 0 0)).
 std::string dump(const Expr& expr);

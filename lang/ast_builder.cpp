@@ -315,6 +315,7 @@ template <> struct action<g::param_name> : push_name {};
 template <> struct action<g::for_variable> : push_name {};
 template <> struct action<g::camera_name> : push_name {};
 template <> struct action<g::paper_size> : push_name {};
+template <> struct action<g::plotter_name> : push_name {};
 template <> struct action<g::style_property> : push_name {};
 template <> struct action<g::style_value> : push_name {};
 template <> struct action<g::orientation> : push_token {};
@@ -392,12 +393,26 @@ struct action<g::if_stmt> {
   }
 };
 
+// pen N -> a PenClause spanning `pen N`
+template <>
+struct action<g::pen_clause> {
+  template <typename Input>
+  static void apply(const Input& in, ParseState& s) {
+    replace_children(s, PenClause{box(take<Expr>(s.items.back())), span_of(in, s)});
+  }
+};
+
 template <>
 struct action<g::draw_stmt> {
   template <typename Input>
   static void apply(const Input& in, ParseState& s) {
     make_statement(span_of(in, s), s, [](auto it, auto end) {
-      return DrawStmt{box(take<Expr>(it[0])), optional_expr(it + 1, end)};
+      DrawStmt draw{box(take<Expr>(*it)), nullptr, std::nullopt};
+      for (++it; it != end; ++it) {
+        if (holds<Expr>(*it)) draw.transform = box(take<Expr>(*it));
+        if (holds<PenClause>(*it)) draw.pen = take<PenClause>(*it);
+      }
+      return draw;
     });
   }
 };
@@ -422,12 +437,37 @@ struct action<g::animate_stmt> {
   }
 };
 
+// A name as written, or a string's text: built-in profile names have dashes ("roland-dxy").
+template <>
+struct action<g::output_plotter_name> {
+  template <typename Input>
+  static void apply(const Input& in, ParseState& s) {
+    if (child_count(s) == 0) {
+      s.items.emplace_back(PlotterName{Name{std::string(in.string_view()), span_of(in, s)}});
+      return;
+    }
+    const Expr text = take<Expr>(s.items.back());
+    const auto& lit = std::get<StringLit>(text.node);
+    if (!lit.is_plain()) {
+      throw SyntaxError{in.begin(), "the plotter name must be a plain string, without '{...}'",
+                        "write the name as it is, as in 'plotter \"roland-dxy\"'"};
+    }
+    replace_children(s, PlotterName{Name{lit.plain_text(), text.span}});
+  }
+};
+
 template <>
 struct action<g::output_stmt> {
   template <typename Input>
   static void apply(const Input& in, ParseState& s) {
     make_statement(span_of(in, s), s, [](auto it, auto end) {
-      return OutputStmt{box(take<Expr>(it[0])), paper_spec(it + 1, end)};
+      OutputStmt output{box(take<Expr>(it[0])), {}, std::nullopt};
+      if (end != it + 1 && holds<PlotterName>(*(end - 1))) {
+        output.plotter = take<PlotterName>(*(end - 1)).name;
+        --end;
+      }
+      output.paper = paper_spec(it + 1, end);
+      return output;
     });
   }
 };
@@ -444,8 +484,37 @@ template <>
 struct action<g::style_stmt> {
   template <typename Input>
   static void apply(const Input& in, ParseState& s) {
-    make_statement(span_of(in, s), s, [](auto it, auto) {
-      return StyleStmt{take<Name>(it[0]), take<Name>(it[1])};
+    make_statement(span_of(in, s), s, [](auto it, auto end) {
+      StyleStmt style{take<Name>(it[0]), take<Name>(it[1]), std::nullopt};
+      if (end - it == 3) style.pen = take<PenClause>(it[2]);
+      return style;
+    });
+  }
+};
+
+template <>
+struct action<g::pen_stmt> {
+  template <typename Input>
+  static void apply(const Input& in, ParseState& s) {
+    make_statement(span_of(in, s), s, [](auto it, auto end) {
+      PenStmt pen{box(take<Expr>(*it)), {}};
+      for (++it; it != end; ++it) pen.options.push_back(take<Argument>(*it));
+      return pen;
+    });
+  }
+};
+
+template <>
+struct action<g::plotter_entry> : make_argument {};
+
+template <>
+struct action<g::plotter_stmt> {
+  template <typename Input>
+  static void apply(const Input& in, ParseState& s) {
+    make_statement(span_of(in, s), s, [](auto it, auto end) {
+      PlotterStmt plotter{take<Name>(*it), {}};
+      for (++it; it != end; ++it) plotter.entries.push_back(take<Argument>(*it));
+      return plotter;
     });
   }
 };

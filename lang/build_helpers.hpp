@@ -212,6 +212,7 @@ inline ExprPtr optional_expr(std::vector<Item>::iterator it, std::vector<Item>::
   return it != end && holds<Expr>(*it) ? box(take<Expr>(*it)) : nullptr;
 }
 
+// [SIZE] [landscape|portrait] [OPTIONS...]: a Name, a Token, Arguments.
 inline PaperSpec paper_spec(std::vector<Item>::iterator it, std::vector<Item>::iterator end) {
   PaperSpec paper;
   for (; it != end; ++it) {
@@ -220,6 +221,7 @@ inline PaperSpec paper_spec(std::vector<Item>::iterator it, std::vector<Item>::i
       paper.orientation =
           std::get<Token>(*it).text == "landscape" ? Orientation::Landscape : Orientation::Portrait;
     }
+    if (holds<Argument>(*it)) paper.options.push_back(take<Argument>(*it));
   }
   return paper;
 }

@@ -30,11 +30,16 @@
 //   primary     number string true false (x, y, z) (e) [a, b] [e for x in l if c] name
 //
 // Solids: `solid NAME [(OPTION: EXPR, ...)] { vertex ... face ... hole ... line ... }`.
+// Option lists `(NAME: EXPR, ...)` after a solid's name, a paper size and a pen number share one shape
+// (option_list), each with its own commit points and messages.
 //
 // Reserved words (never names): solid let def return for in if else draw at camera animate output
 // paper style include then and or not true false. Words with meaning in one place only stay free
 // as names elsewhere: vertex face hole line (inside a solid), frames fps (after animate),
-// landscape portrait (after a paper size), hidden dashed off (after style).
+// landscape portrait (after a paper size), hidden dashed off (after style), pen plotter (at a
+// statement's start — no statement starts with an expression — and in `draw ... pen N`, `style hidden
+// dashed pen N`, `output ... plotter NAME`). Where such a clause could also be the next statement
+// (`draw a` then `pen 2 (colour: "red")`), a lookahead for the statement's shape decides.
 #pragma once
 
 #include <tao/pegtl.hpp>
@@ -94,6 +99,8 @@ struct key_line : key< TAO_PEGTL_STRING( "line" ) > {};
 struct key_fps : key< TAO_PEGTL_STRING( "fps" ) > {};
 struct key_landscape : key< TAO_PEGTL_STRING( "landscape" ) > {};
 struct key_portrait : key< TAO_PEGTL_STRING( "portrait" ) > {};
+struct key_pen : key< TAO_PEGTL_STRING( "pen" ) > {};
+struct key_plotter : key< TAO_PEGTL_STRING( "plotter" ) > {};
 struct solid_word : sor< key_vertex, key_face, key_hole, key_line > {};
 
 struct name : seq< not_at< reserved >, identifier > {};
@@ -171,6 +178,12 @@ struct index_close : one< ']' > {};
 struct index_suffix : seq< index_open, sp, must< index_value >, sp, must< index_close > > {};
 struct postfix_expr : seq< primary, star< sp, sor< call_suffix, member_suffix, index_suffix > > > {};
 
+// `(NAME: EXPR, ...)` after a solid's name, a paper size or a pen number: a call's argument list (the
+// same `argument` rule, so positional values parse too and the runtime reports them) whose commit
+// points are each place's own rules, for messages naming the place.
+template< typename Open, typename Next, typename Close >
+struct option_list : seq< Open, sp, opt< argument, star< sp, one< ',' >, sp, must< Next > >, sp >, must< Close > > {};
+
 struct neg_op : one< '-' > {};
 struct neg_operand;
 struct neg_expr : sor< seq< neg_op, sp, must< neg_operand > >, postfix_expr > {};
@@ -237,9 +250,8 @@ struct line_decl : seq< key_line, sp, must< line_from >, sp, must< line_to > > {
 // reports them) with its own commit points and messages.
 struct solid_options_open : one< '(' > {};
 struct solid_option_next : seq< argument > {};
-struct solid_option_list : seq< argument, star< sp, one< ',' >, sp, must< solid_option_next > > > {};
 struct solid_options_close : one< ')' > {};
-struct solid_options : seq< solid_options_open, sp, opt< solid_option_list, sp >, must< solid_options_close > > {};
+struct solid_options : option_list< solid_options_open, solid_option_next, solid_options_close > {};
 
 struct solid_item : sor< vertex_decl, face_decl, line_decl > {};
 struct solid_name : name {};
@@ -288,9 +300,16 @@ struct if_body : seq< block > {};
 struct else_body : sor< if_stmt, block > {};
 struct if_stmt : seq< key_if, sp, must< if_condition >, sp, must< if_body >, opt< sp, key_else, sp, must< else_body > > > {};
 
+// `pen N` after a draw or `style hidden dashed`; not when it is the start of a pen statement, `pen N (`
+// followed by `)` or `NAME:` (N a number, a name or a parenthesised expression, as in pen_stmt).
+struct pen_number : sor< number, name_ref, seq< not_at< one< '(' >, sp, arg_label >, paren_expr > > {};
+struct pen_stmt_ahead : seq< key_pen, sp, pen_number, sp, one< '(' >, sp, sor< one< ')' >, arg_label > > {};
+struct pen_value : seq< expression > {};
+struct pen_clause : seq< not_at< pen_stmt_ahead >, key_pen, sp, must< pen_value > > {};
+
 struct draw_object : seq< expression > {};
 struct draw_transform : seq< expression > {};
-struct draw_stmt : seq< key_draw, sp, must< draw_object >, opt< sp, key_at, sp, must< draw_transform > > > {};
+struct draw_stmt : seq< key_draw, sp, must< draw_object >, opt< sp, key_at, sp, must< draw_transform > >, opt< sp, pen_clause > > {};
 
 struct camera_name : name {};
 struct camera_eq : seq< one< '=' >, not_at< one< '=' > > > {};
@@ -302,22 +321,51 @@ struct frame_count : seq< expression > {};
 struct fps_value : seq< expression > {};
 struct animate_stmt : seq< key_animate, sp, must< animate_frames >, sp, must< frame_count >, opt< sp, key_fps, sp, must< fps_value > > > {};
 
+// paper SIZE [landscape|portrait] [(margin: MM, scale: MM_PER_UNIT)]; SIZE `custom` takes width: and
+// height: in the options. The same after `output "..."`, which also takes a lone orientation (kept from
+// before papers had options) and `plotter NAME` (a name, or a string for built-in names with dashes).
 struct paper_size : identifier {};
 struct orientation : sor< key_landscape, key_portrait > {};
+struct paper_options_open : one< '(' > {};
+struct paper_option_next : seq< argument > {};
+struct paper_options_close : one< ')' > {};
+struct paper_options : option_list< paper_options_open, paper_option_next, paper_options_close > {};
 struct output_pattern : seq< string_lit > {};
 struct output_paper_size : seq< paper_size > {};
-struct output_stmt : seq< key_output, sp, must< output_pattern >, opt< sp, key_paper, sp, must< output_paper_size > >, opt< sp, orientation > > {};
-struct paper_stmt : seq< key_paper, sp, must< paper_size >, opt< sp, orientation > > {};
+struct output_paper : seq< key_paper, sp, must< output_paper_size >, opt< sp, orientation >, opt< sp, paper_options > > {};
+struct plotter_stmt_ahead : seq< key_plotter, sp, name, sp, one< '{' > > {};
+struct output_plotter_name : sor< string_lit, name > {};
+struct output_plotter : seq< not_at< plotter_stmt_ahead >, key_plotter, sp, must< output_plotter_name > > {};
+struct output_stmt : seq< key_output, sp, must< output_pattern >, opt< sp, sor< output_paper, orientation > >, opt< sp, output_plotter > > {};
+struct paper_stmt : seq< key_paper, sp, must< paper_size >, opt< sp, orientation >, opt< sp, paper_options > > {};
 
 struct style_property : key< TAO_PEGTL_STRING( "hidden" ) > {};
 struct style_value : sor< key< TAO_PEGTL_STRING( "dashed" ) >, key< TAO_PEGTL_STRING( "off" ) > > {};
-struct style_stmt : seq< key_style, sp, must< style_property >, sp, must< style_value > > {};
+struct style_stmt : seq< key_style, sp, must< style_property >, sp, must< style_value >, opt< sp, pen_clause > > {};
+
+// pen N (colour: "red", width: 0.35). N is a number, a name or a parenthesised expression — not a
+// call, whose '(' would take the options.
+struct pen_options_open : one< '(' > {};
+struct pen_option_next : seq< argument > {};
+struct pen_options_close : one< ')' > {};
+struct pen_options : option_list< pen_options_open, pen_option_next, pen_options_close > {};
+struct pen_stmt : seq< key_pen, sp, must< pen_number >, sp, must< pen_options > > {};
+
+// plotter NAME { KEY: EXPR ... }: entries separated by ',' or just padding (one per line).
+struct plotter_name : name {};
+struct plotter_open : one< '{' > {};
+struct plotter_value : seq< expression > {};
+struct plotter_entry : seq< arg_label, sp, must< plotter_value > > {};
+struct plotter_next_entry : seq< plotter_entry > {};
+struct plotter_entries : seq< plotter_entry, star< sp, sor< seq< one< ',' >, sp, must< plotter_next_entry > >, plotter_entry > > > {};
+struct plotter_close : one< '}' > {};
+struct plotter_stmt : seq< key_plotter, sp, must< plotter_name >, sp, must< plotter_open >, sp, opt< plotter_entries, sp >, must< plotter_close > > {};
 
 struct include_path : seq< string_lit > {};
 struct include_stmt : seq< key_include, sp, must< include_path > > {};
 
 struct statement : sor< solid_stmt, let_stmt, def_stmt, return_stmt, for_stmt, if_stmt, draw_stmt, camera_stmt,
-                        animate_stmt, output_stmt, paper_stmt, style_stmt, include_stmt > {};
+                        animate_stmt, output_stmt, paper_stmt, style_stmt, include_stmt, pen_stmt, plotter_stmt > {};
 
 // ---- the script ---------------------------------------------------------------------------------
 

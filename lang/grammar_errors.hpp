@@ -125,16 +125,38 @@ HLR_ERROR(fps_value, "expected frames per second after 'fps', as in 'animate fra
 HLR_ERROR(output_pattern, "expected a quoted file name after 'output', as in 'output \"frame-{frame:03}.pdf\"'");
 HLR_ERROR(output_paper_size, "expected a paper size after 'paper', as in 'paper A4'");
 HLR_ERROR(paper_size, "expected a paper size after 'paper', as in 'paper A4'");
+HLR_ERROR(paper_option_next, "expected an option after ',' in the paper's options, as in '(margin: 10, scale: 0.5)'");
+HLR_HINT(paper_option_next, "a trailing ',' is not allowed");
+HLR_ERROR(paper_options_close, "expected ',' or ')' in the paper's options");
+HLR_HINT(paper_options_close, "options are 'name: value' pairs separated by ',', as in 'paper A4 landscape (margin: 10, scale: 0.5)'");
+HLR_ERROR(output_plotter_name, "expected a plotter name after 'plotter', as in 'plotter hp7475a' or 'plotter \"roland-dxy\"'");
 HLR_ERROR(style_property, "expected 'hidden' after 'style', as in 'style hidden dashed'");
 HLR_ERROR(style_value, "expected 'dashed' or 'off' after 'style hidden'");
+HLR_ERROR(pen_value, "expected a pen number after 'pen', as in 'draw box pen 2'");
+HLR_ERROR(pen_number, "expected the pen number after 'pen', as in 'pen 2 (colour: \"red\", width: 0.35)'");
+HLR_HINT(pen_number, "the number is a whole number, a name or an expression in parentheses: 'pen (i + 1) (...)'");
+HLR_ERROR(pen_options, "expected '(' and the pen's options after the pen number, as in 'pen 2 (colour: \"red\", width: 0.35)'");
+HLR_ERROR(pen_option_next, "expected an option after ',' in the pen's options, as in '(colour: \"red\", width: 0.35)'");
+HLR_HINT(pen_option_next, "a trailing ',' is not allowed");
+HLR_ERROR(pen_options_close, "expected ',' or ')' in the pen's options");
+HLR_HINT(pen_options_close, "options are 'name: value' pairs separated by ',', as in 'pen 2 (colour: \"red\", width: 0.35)'");
+HLR_ERROR(plotter_name, "expected a name after 'plotter', as in 'plotter mine { base: \"hp7475a\", pens: 6 }'");
+HLR_ERROR(plotter_open, "expected '{' after the plotter's name, as in 'plotter mine { base: \"hp7475a\", pens: 6 }'");
+HLR_ERROR(plotter_value, "expected a value after the key and ':', as in 'pens: 6'");
+HLR_ERROR(plotter_next_entry, "expected 'key: value' after ',' in the plotter, as in 'pens: 6'");
+HLR_HINT(plotter_next_entry, "a trailing ',' is not allowed");
+HLR_ERROR(plotter_close, "expected 'key: value' or '}' in the plotter");
+HLR_HINT(plotter_close, "entries are 'key: value', separated by ',' or new lines, as in 'plotter mine { base: \"hp7475a\", pens: 6 }'");
 HLR_ERROR(include_path, "expected a quoted file name after 'include', as in 'include \"parts.hls\"'");
 HLR_ERROR(top_statement, "expected a statement");
-HLR_HINT(top_statement, "statements start with solid, let, def, for, if, draw, camera, animate, output, paper, style or include");
+HLR_HINT(top_statement, "statements start with solid, let, def, for, if, draw, camera, animate, output, paper, style, pen, plotter or include");
 
 // clang-format on
 
 #undef HLR_ERROR
 #undef HLR_HINT
+
+// clang-format off
 
 // The opening bracket a closing rule matches; 0 for rules that close nothing.
 template <typename Rule>
@@ -144,12 +166,15 @@ template <> inline constexpr char closes<vector_close> = '(';
 template <> inline constexpr char closes<call_close> = '(';
 template <> inline constexpr char closes<params_close> = '(';
 template <> inline constexpr char closes<solid_options_close> = '(';
+template <> inline constexpr char closes<paper_options_close> = '(';
+template <> inline constexpr char closes<pen_options_close> = '(';
 template <> inline constexpr char closes<list_close> = '[';
 template <> inline constexpr char closes<comp_close> = '[';
 template <> inline constexpr char closes<index_close> = '[';
 template <> inline constexpr char closes<interp_close> = '{';
 template <> inline constexpr char closes<solid_close> = '{';
 template <> inline constexpr char closes<block_close> = '{';
+template <> inline constexpr char closes<plotter_close> = '{';
 
 // Opening brackets: each is matched by exactly one closing rule above, and everything between is
 // committed, so the control keeps a simple stack of where they opened.
@@ -159,6 +184,9 @@ template <> inline constexpr bool opens<paren_open> = true;
 template <> inline constexpr bool opens<call_open> = true;
 template <> inline constexpr bool opens<params_open> = true;
 template <> inline constexpr bool opens<solid_options_open> = true;
+template <> inline constexpr bool opens<paper_options_open> = true;
+template <> inline constexpr bool opens<pen_options_open> = true;
+template <> inline constexpr bool opens<plotter_open> = true;
 template <> inline constexpr bool opens<list_open> = true;
 template <> inline constexpr bool opens<index_open> = true;
 template <> inline constexpr bool opens<interp_open> = true;
@@ -184,5 +212,9 @@ template <> inline constexpr bool expects_name<for_variable> = true;
 template <> inline constexpr bool expects_name<comp_variable> = true;
 template <> inline constexpr bool expects_name<camera_name> = true;
 template <> inline constexpr bool expects_name<member_name> = true;
+template <> inline constexpr bool expects_name<plotter_name> = true;
+template <> inline constexpr bool expects_name<output_plotter_name> = true;
+
+// clang-format on
 
 }  // namespace hlr::lang::grammar

@@ -34,9 +34,13 @@ struct IndexSuffix {
   ExprPtr index;
   SourceSpan span;
 };
+// The name after `output ... plotter`, apart from the paper size's Name.
+struct PlotterName {
+  Name name;
+};
 
 using Item = std::variant<Expr, Stmt, Token, Name, VertexId, Argument, Param, StringPart, CallSuffix,
-                          MemberSuffix, IndexSuffix, SolidItem, HoleLoop, Block>;
+                          MemberSuffix, IndexSuffix, SolidItem, HoleLoop, Block, PenClause, PlotterName>;
 
 // Thrown by the control (a failed must<>) and by actions; the parser turns it into a Diagnostic.
 struct SyntaxError {

@@ -70,8 +70,10 @@ std::size_t token_length(std::string_view text, std::size_t pos) {
   return end - pos;
 }
 
-constexpr std::array kStatementWords = {"solid",   "let",    "def",   "for",   "if",      "draw",  "camera",
-                                        "animate", "output", "paper", "style", "include", "return"};
+// Statement keywords, the contextual `pen` and `plotter` included: recovery resumes at them.
+constexpr std::array kStatementWords = {"solid", "let",     "def",     "for",    "if",
+                                        "draw",  "camera",  "animate", "output", "paper",
+                                        "style", "include", "return",  "pen",    "plotter"};
 constexpr std::array kReservedWords = {
     "solid",   "let",    "def",   "return", "for",     "in",   "if",  "else", "draw", "at",   "camera",
     "animate", "output", "paper", "style",  "include", "then", "and", "or",   "not",  "true", "false"};

@@ -1,6 +1,6 @@
 // Static checks that the grammar cannot express neatly but that need no evaluation: where `return`
-// may stand, the order and uniqueness of arguments and parameters. Names, arity and types are the
-// runtime checker's business.
+// may stand, the order and uniqueness of arguments and parameters, a pen only on dashed hidden lines.
+// Names, arity and types are the runtime checker's business.
 #include <algorithm>
 #include <set>
 #include <string>
@@ -79,16 +79,36 @@ class Checker {
   void visit(const Stmt&, const DrawStmt& s) {
     expr(*s.object);
     if (s.transform) expr(*s.transform);
+    if (s.pen) expr(*s.pen->number);
   }
   void visit(const Stmt&, const CameraStmt& s) { expr(*s.value); }
   void visit(const Stmt&, const AnimateStmt& s) {
     expr(*s.frames);
     if (s.fps) expr(*s.fps);
   }
-  void visit(const Stmt&, const OutputStmt& s) { expr(*s.pattern); }
-  void visit(const Stmt&, const PaperStmt&) {}
-  void visit(const Stmt&, const StyleStmt&) {}
+  void visit(const Stmt&, const OutputStmt& s) {
+    expr(*s.pattern);
+    arguments(s.paper.options);
+  }
+  void visit(const Stmt&, const PaperStmt& s) { arguments(s.paper.options); }
+  void visit(const Stmt&, const StyleStmt& s) {
+    if (!s.pen) return;
+    if (s.value.text != "dashed") {
+      error(s.pen->span, "a pen goes only with 'style hidden dashed'",
+            "hidden lines that are off are not drawn: remove the pen, or write 'style hidden dashed pen N'");
+    }
+    expr(*s.pen->number);
+  }
   void visit(const Stmt&, const IncludeStmt&) {}
+  void visit(const Stmt&, const PenStmt& s) {
+    expr(*s.number);
+    arguments(s.options);  // names and values: the runtime's
+  }
+  void visit(const Stmt&, const PlotterStmt& s) { arguments(s.entries); }
+
+  void arguments(const std::vector<Argument>& args) {
+    for (const auto& arg : args) expr(*arg.value);
+  }
 
   void expr(const Expr& e) {
     if (const auto* call = std::get_if<CallExpr>(&e.node)) {

@@ -1,5 +1,6 @@
-// Settings statements (animate, output, paper, style) and include. Each setting may be given once per
-// evaluation; a second one is an error pointing at the first, so two files cannot silently disagree.
+// Settings statements (animate, output, style) and include; paper, pen and plotter are in
+// eval_devices.cpp. Each setting may be given once per evaluation; a second one is an error pointing at
+// the first, so two files cannot silently disagree.
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -10,10 +11,8 @@
 
 namespace hlr::runtime {
 
-namespace {
-
-[[noreturn]] void already_set(const lang::SourceSpan& span, const std::string& what,
-                              const lang::SourceSpan& first) {
+void Evaluator::already_set(const lang::SourceSpan& span, const std::string& what,
+                            const lang::SourceSpan& first) {
   lang::Diagnostic d;
   d.span = span;
   d.message = "'" + what + "' is already set";
@@ -21,14 +20,6 @@ namespace {
   d.notes.push_back({first, "it was set here"});
   throw EvalError(std::move(d));
 }
-
-std::string paper_list() {
-  std::string out;
-  for (const std::string_view name : paper_names()) out += (out.empty() ? "" : ", ") + std::string(name);
-  return out;
-}
-
-}  // namespace
 
 double Evaluator::eval_number(const lang::Expr& expr, const ScopePtr& scope, const std::string& what) {
   const Value v = eval(expr, scope);
@@ -68,30 +59,28 @@ void Evaluator::exec_output(const lang::OutputStmt& output, const lang::Stmt& st
   const auto* lit = std::get_if<lang::StringLit>(&output.pattern->node);
   o.interpolated = lit && !lit->is_plain();
   o.span = output.pattern->span;
+  // `plotter NAME` is only recorded: the run resolves it against the declared and built-in profiles.
+  if (output.plotter) {
+    if (output.plotter->text.empty()) fail(output.plotter->span, "the plotter name is empty");
+    o.plotter = output.plotter->text;
+    o.plotter_span = output.plotter->span;
+  }
   out_.output = o;
-  if (output.paper.size) set_paper(output.paper, stmt);
+  if (output.paper.size) set_paper(output.paper, stmt, scope);
 }
 
-void Evaluator::set_paper(const lang::PaperSpec& paper, const lang::Stmt& stmt) {
-  if (out_.paper) already_set(stmt.span, "paper", out_.paper->span);
-  if (!paper.size) return;
-  // Landscape unless the script says portrait: drawings are mostly wider than tall, and it is the
-  // devices' default.
-  const bool landscape = paper.orientation != lang::Orientation::Portrait;
-  const std::optional<Paper> found = paper_by_name(paper.size->text, landscape);
-  if (!found)
-    fail(paper.size->span, "unknown paper size '" + paper.size->text + "'", "use one of " + paper_list());
-  out_.paper = PaperSetting{paper.size->text, *found, stmt.span};
-}
-
-void Evaluator::exec_style(const lang::StyleStmt& style, const lang::Stmt& stmt) {
+void Evaluator::exec_style(const lang::StyleStmt& style, const lang::Stmt& stmt, const ScopePtr& scope) {
   if (style.property.text != "hidden")
     fail(style.property.span, "unknown style '" + style.property.text + "'",
-         "the style is: style hidden dashed|off");
+         "the style is: style hidden dashed|off [pen N]");
   if (out_.hidden_span) already_set(stmt.span, "style hidden", *out_.hidden_span);
   if (style.value.text != "dashed" && style.value.text != "off")
     fail(style.value.span, "style hidden takes 'dashed' or 'off', got '" + style.value.text + "'");
-  out_.hidden = style.value.text == "dashed";
+  const bool dashed = style.value.text == "dashed";
+  if (style.pen && !dashed)  // the syntax check reports it first
+    fail(style.pen->span, "a pen goes only with 'style hidden dashed'");
+  if (style.pen) out_.hidden_pen = eval_pen_number(*style.pen->number, scope);
+  out_.hidden = dashed;
   out_.hidden_span = stmt.span;
 }
 

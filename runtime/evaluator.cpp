@@ -99,9 +99,11 @@ Evaluator::Flow Evaluator::exec(const lang::Stmt& stmt, const ScopePtr& scope) {
           [&](const lang::CameraStmt& s) { return exec_camera(s, stmt, scope), Flow::Next; },
           [&](const lang::AnimateStmt& s) { return exec_animate(s, stmt, scope), Flow::Next; },
           [&](const lang::OutputStmt& s) { return exec_output(s, stmt, scope), Flow::Next; },
-          [&](const lang::PaperStmt& s) { return set_paper(s.paper, stmt), Flow::Next; },
-          [&](const lang::StyleStmt& s) { return exec_style(s, stmt), Flow::Next; },
+          [&](const lang::PaperStmt& s) { return set_paper(s.paper, stmt, scope), Flow::Next; },
+          [&](const lang::StyleStmt& s) { return exec_style(s, stmt, scope), Flow::Next; },
           [&](const lang::IncludeStmt& s) { return exec_include(s, scope), Flow::Next; },
+          [&](const lang::PenStmt& s) { return exec_pen(s, stmt, scope), Flow::Next; },
+          [&](const lang::PlotterStmt& s) { return exec_plotter(s, stmt, scope), Flow::Next; },
       },
       stmt.node);
 }
@@ -154,6 +156,8 @@ void Evaluator::exec_draw(const lang::DrawStmt& draw, const ScopePtr& scope) {
            "for example: draw s at translate(1, 0, 0) then rotate(z: 30)");
     at = t.as_transform();
   }
+  // Every object this draw adds gets the pen; FrameScene::object_pens stays parallel to the objects.
+  const int pen = draw.pen ? eval_pen_number(*draw.pen->number, scope) : 1;
   const lang::SourceSpan& span = draw.transform ? draw.transform->span : draw.object->span;
   for (PlacedSolid& placed : flatten_placed(object, at, draw.object->span, "draw", budget_)) {
     budget_.charge_faces_drawn(draw.object->span, placed.solid->faces.size());
@@ -172,6 +176,7 @@ void Evaluator::exec_draw(const lang::DrawStmt& draw, const ScopePtr& scope) {
           fail(span, "the transform moves a vertex beyond the largest number (about 1.8e308)");
     }
     out_.scene.objects.push_back(std::move(o));
+    out_.object_pens.push_back(pen);
   }
 }
 

@@ -1,6 +1,6 @@
 // The tree-walking evaluator: runs a parsed script once, for one frame, and fills a FrameScene.
 //   statements  evaluator.cpp (let def return for if draw camera), eval_settings.cpp (animate output
-//               paper style include), eval_solid.cpp (solid)
+//               style include), eval_devices.cpp (paper pen plotter, pen numbers), eval_solid.cpp (solid)
 //   expressions eval_expr.cpp, operators.cpp; calls eval_call.cpp
 // Scopes: builtins (looked up last) ← frame globals (frame, t, time) ← the script's top level ← blocks.
 // Every error is an EvalError at a span; the evaluator never prints or exits.
@@ -61,9 +61,17 @@ class Evaluator {
   // settings (eval_settings.cpp)
   void exec_animate(const lang::AnimateStmt& animate, const lang::Stmt& stmt, const ScopePtr& scope);
   void exec_output(const lang::OutputStmt& output, const lang::Stmt& stmt, const ScopePtr& scope);
-  void set_paper(const lang::PaperSpec& paper, const lang::Stmt& stmt);
-  void exec_style(const lang::StyleStmt& style, const lang::Stmt& stmt);
+  void exec_style(const lang::StyleStmt& style, const lang::Stmt& stmt, const ScopePtr& scope);
   void exec_include(const lang::IncludeStmt& include, const ScopePtr& scope);
+  // A setting given a second time: an error at `span` pointing at the first.
+  [[noreturn]] static void already_set(const lang::SourceSpan& span, const std::string& what,
+                                       const lang::SourceSpan& first);
+  // device settings (eval_devices.cpp)
+  void set_paper(const lang::PaperSpec& paper, const lang::Stmt& stmt, const ScopePtr& scope);
+  void exec_pen(const lang::PenStmt& pen, const lang::Stmt& stmt, const ScopePtr& scope);
+  void exec_plotter(const lang::PlotterStmt& plotter, const lang::Stmt& stmt, const ScopePtr& scope);
+  // `pen N`: a whole number from 1 to 255, else an error at `expr`
+  int eval_pen_number(const lang::Expr& expr, const ScopePtr& scope);
 
   // expressions (eval_expr.cpp)
   Value eval(const lang::Expr& expr, const ScopePtr& scope);

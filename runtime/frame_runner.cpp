@@ -36,6 +36,10 @@ FrameOutput render_one(const FrameScene& scene, const std::string& script_name, 
   out.camera = camera.camera;
   out.output = scene.output;
   out.paper = scene.paper;
+  out.object_pens = scene.object_pens;
+  out.hidden_pen = scene.hidden_pen;
+  out.pens = scene.pens;
+  out.plotters = scene.plotters;
   for (const SceneObject& o : scene.scene.objects) {
     out.object_names.push_back(o.name);
     out.faces += o.solid.faces.size();

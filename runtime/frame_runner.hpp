@@ -43,6 +43,10 @@ struct FrameOutput {
   FrameStats stats;
   std::optional<OutputSetting> output;  // the script's output name for this frame
   std::optional<PaperSetting> paper;
+  std::vector<int> object_pens;  // by object: draw ... pen N
+  std::optional<int> hidden_pen;  // style hidden dashed pen N
+  std::vector<PenSetting> pens;
+  std::vector<PlotterSetting> plotters;
   double evaluate_seconds = 0;
   double render_seconds = 0;
 };

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "core/camera/camera.hpp"
+#include "core/device/hpgl_profile.hpp"
 #include "core/device/page_layout.hpp"
 #include "core/hlr/scene.hpp"
 #include "lang/ast.hpp"
@@ -35,15 +36,31 @@ struct AnimationSetting {  // animate frames N fps F
   lang::SourceSpan span;
 };
 
-struct OutputSetting {        // output "pattern"
+struct OutputSetting {        // output "pattern" [paper ...] [plotter NAME]
   std::string name;           // the pattern evaluated for this frame
   bool interpolated = false;  // the pattern has {...}: each frame may name its own file
   lang::SourceSpan span;      // the pattern string
+  std::optional<std::string> plotter;  // a declared plotter's or a built-in profile's name
+  std::optional<lang::SourceSpan> plotter_span;
 };
 
-struct PaperSetting {  // paper A4 landscape (or the paper of an output statement)
+struct PaperSetting {  // paper A4 landscape [(margin: MM, scale: MM_PER_UNIT)], paper custom (width:, height:)
   std::string size;    // as written
   Paper paper;
+  std::optional<double> margin_mm;
+  std::optional<double> mm_per_unit;  // explicit scale instead of fit-to-page
+  lang::SourceSpan span;
+};
+
+struct PenSetting {  // pen N (colour: "red", width: 0.35)
+  int pen = 1;
+  std::optional<std::string> colour;  // as written, already checked to parse
+  std::optional<double> width_mm;
+  lang::SourceSpan span;
+};
+
+struct PlotterSetting {  // plotter NAME { base: "hp7475a", unit: 0.025, pens: 6, ... }
+  HpglProfile profile;   // profile.name == NAME
   lang::SourceSpan span;
 };
 
@@ -56,6 +73,10 @@ struct FrameScene {
   std::optional<PaperSetting> paper;
   std::optional<bool> hidden;  // style hidden dashed (true) | off (false)
   std::optional<lang::SourceSpan> hidden_span;
+  std::optional<int> hidden_pen;  // style hidden dashed pen N
+  std::vector<int> object_pens;   // by scene object: draw ... pen N (default 1)
+  std::vector<PenSetting> pens;   // pen statements, each pen number at most once
+  std::vector<PlotterSetting> plotters;  // declared plotters, names unique
   std::vector<lang::Diagnostic> warnings;
   std::uint64_t steps = 0;
   std::size_t faces_built = 0;

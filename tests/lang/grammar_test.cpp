@@ -289,6 +289,86 @@ TEST(Grammar, Statements) {
   });
 }
 
+TEST(Grammar, PaperOptions) {
+  check_rows<g::paper_stmt>(
+      {{"paper A4 (margin: 10)", S},
+       {"paper A4 landscape (margin: 10, scale: 0.5)", S},
+       {"paper custom (width: 300, height: 200)", S},
+       {"paper custom portrait (width: 300, height: 200, margin: 5)", S},
+       {"paper A4 ()", S},
+       {"paper A4 (10)", S},  // parses: the runtime says options need names
+       {"paper A4 (margin: 10", G, "expected ',' or ')' in the paper's options"},
+       {"paper A4 (margin 10)", G, "expected ',' or ')' in the paper's options"},
+       {"paper A4 (margin: 10,)", G, "expected an option after ',' in the paper's options"},
+       {"paper A4 (margin:)", G, "expected a value after the argument name and ':'"}});
+  check_rows<g::paper_options>({{"(margin: 1)", S}, {"margin: 1", L}, {"(", G, "expected ',' or ')'"}});
+}
+
+TEST(Grammar, OutputPaperAndPlotter) {
+  check_rows<g::output_stmt>(
+      {{"output \"x.pdf\" paper A4 landscape (margin: 10)", S},
+       {"output \"x.pdf\" paper custom (width: 100, height: 80)", S},
+       {"output \"x.hpgl\" plotter hp7475a", S},
+       {"output \"x.hpgl\" paper A4 plotter \"roland-dxy\"", S},
+       {"output \"x.hpgl\" paper A3 portrait (scale: 2) plotter mine", S},
+       {"output \"x.hpgl\" landscape plotter mine", S},
+       {"output \"x.hpgl\" plotter", G, "expected a plotter name after 'plotter'"},
+       {"output \"x.hpgl\" plotter 7", G, "expected a plotter name after 'plotter'"},
+       {"output \"x.pdf\" paper A4 (margin: 1", G, "expected ',' or ')' in the paper's"},
+       // `plotter NAME {` starts a plotter statement, not the output's clause
+       {"output \"x.hpgl\" plotter mine {}", L}});
+}
+
+TEST(Grammar, Pens) {
+  check_rows<g::pen_stmt>({{"pen 2 (colour: \"red\", width: 0.35)", S},
+                           {"pen 2(color: \"#f00\")", S},
+                           {"pen 2 ()", S},
+                           {"pen n (width: 0.5)", S},
+                           {"pen (i + 1) (width: 0.5)", S},
+                           {"pen 2", G, "expected '(' and the pen's options after the pen number"},
+                           {"pen \"red\" (width: 1)", G, "expected the pen number after 'pen'"},
+                           {"pen (colour: \"red\")", G, "expected the pen number after 'pen'"},
+                           {"pen -1 (width: 1)", G, "expected the pen number after 'pen'"},
+                           {"pen 2 (width: 1", G, "expected ',' or ')' in the pen's options"},
+                           {"pen 2 (width: 1,)", G, "expected an option after ',' in the pen's options"},
+                           {"pen", G, "expected the pen number after 'pen'"}});
+  check_rows<g::draw_stmt>({{"draw x pen 2", S},
+                            {"draw x at t pen n + 1", S},
+                            {"draw x pen f(i)", S},
+                            {"draw pen", S},  // a name here
+                            {"draw x pen", G, "expected a pen number after 'pen', as in 'draw box pen 2'"},
+                            {"draw x pen 2 (colour: \"red\")", L},  // a draw, then a pen statement
+                            {"draw x pen 2 ()", L}});
+  check_rows<g::style_stmt>({{"style hidden dashed pen 2", S},
+                             {"style hidden off pen 2", S},  // parses: the syntax check reports it
+                             {"style hidden dashed pen", G, "expected a pen number after 'pen'"}});
+}
+
+TEST(Grammar, Plotters) {
+  check_rows<g::plotter_stmt>(
+      {{"plotter mine { base: \"hp7475a\", pens: 6 }", S},
+       {"plotter mine {\n  base: \"hp7475a\"\n  unit: 0.025  # comment\n  velocity: 2 * 20\n}", S},
+       {"plotter mine { base: \"hp7475a\" pens: 6, newline: true }", S},
+       {"plotter mine {}", S},
+       {"plotter { }", G, "expected a name after 'plotter'"},
+       {"plotter mine", G, "expected '{' after the plotter's name"},
+       {"plotter mine { pens 6 }", G, "expected 'key: value' or '}' in the plotter"},
+       {"plotter mine { pens: }", G, "expected a value after the key and ':'"},
+       {"plotter mine { pens: 6, }", G, "expected 'key: value' after ',' in the plotter"},
+       {"plotter mine { pens: 6", G, "expected 'key: value' or '}' in the plotter"}});
+}
+
+TEST(Grammar, DeviceWordsAreContextual) {
+  check_rows<g::script>({{"draw a\npen 2 (colour: \"red\")", S},
+                         {"draw a pen 2\npen 3 (width: 1)", S},
+                         {"draw a at t\npen (k) ()", S},
+                         {"style hidden dashed\npen 1 (width: 0.2)", S},
+                         {"output \"x.hpgl\"\nplotter mine { pens: 2 }", S},
+                         {"output \"x.hpgl\" plotter mine\nplotter mine { pens: 2 }", S},
+                         {"let pen = 1 let plotter = 2 draw x pen pen + plotter", S},
+                         {"let x = pen", S}});
+}
+
 TEST(Grammar, Script) {
   check_rows<g::script>({{"", S},
                          {"  # only a comment\n", S},

@@ -269,6 +269,80 @@ TEST(Parser, Settings) {
   EXPECT_EQ(out.paper.orientation, Orientation::Landscape);
 }
 
+TEST(Parser, PaperOptions) {
+  EXPECT_EQ(ast("paper A4 landscape (margin: 10, scale: 0.5)"),
+            "(paper A4 landscape (options margin:10 scale:0.5))");
+  EXPECT_EQ(ast("paper custom (width: 300, height: 2 * w)"),
+            "(paper custom (options width:300 height:(* 2 w)))");
+  EXPECT_EQ(ast("paper A4 ()"), "(paper A4)");
+  EXPECT_EQ(ast("output \"p.pdf\" paper A3 portrait (margin: 5)"),
+            "(output \"p.pdf\" A3 portrait (options margin:5))");
+  const std::string text = "paper letter (margin: 12.5, scale: 1)";
+  const Script script = parse_ok(text);
+  const auto& paper = std::get<PaperStmt>(script.statements[0].node).paper;
+  ASSERT_EQ(paper.options.size(), 2U);
+  ASSERT_TRUE(paper.options[0].label);
+  EXPECT_EQ(paper.options[0].label->text, "margin");
+  EXPECT_EQ(span_text(text, paper.options[0].span), "margin: 12.5");
+  EXPECT_EQ(span_text(text, paper.options[1].span), "scale: 1");
+  EXPECT_EQ(paper.orientation, Orientation::Unspecified);
+}
+
+TEST(Parser, OutputPlotter) {
+  EXPECT_EQ(ast("output \"p.hpgl\" plotter hp7475a"), "(output \"p.hpgl\" plotter hp7475a)");
+  EXPECT_EQ(ast("output \"p.hpgl\" paper A3 portrait (margin: 5) plotter \"roland-dxy\""),
+            "(output \"p.hpgl\" A3 portrait (options margin:5) plotter roland-dxy)");
+  EXPECT_EQ(ast("output \"p.hpgl\" landscape plotter mine"), "(output \"p.hpgl\" landscape plotter mine)");
+  const std::string text = "output \"p.hpgl\" plotter \"roland-dxy\"";
+  const Script script = parse_ok(text);
+  const auto& out = std::get<OutputStmt>(script.statements[0].node);
+  EXPECT_FALSE(out.paper.size);
+  ASSERT_TRUE(out.plotter);
+  EXPECT_EQ(out.plotter->text, "roland-dxy");
+  EXPECT_EQ(span_text(text, out.plotter->span), "\"roland-dxy\"");
+  // A plotter statement on the next line is not the output's plotter clause.
+  EXPECT_EQ(dump(parse_ok("output \"p.hpgl\"\nplotter mine { pens: 2 }")),
+            "(output \"p.hpgl\")\n(plotter mine (entries pens:2))\n");
+}
+
+TEST(Parser, Pens) {
+  EXPECT_EQ(ast("pen 2 (colour: \"red\", width: 0.35)"), "(pen 2 (options colour:\"red\" width:0.35))");
+  EXPECT_EQ(ast("pen (i + 1) ()"), "(pen (+ i 1) (options))");
+  EXPECT_EQ(ast("draw box(1) at translate(1, 0, 0) pen 3"),
+            "(draw (call box 1) at (call translate 1 0 0) pen 3)");
+  EXPECT_EQ(ast("draw box(1) pen k + 1"), "(draw (call box 1) pen (+ k 1))");
+  EXPECT_EQ(ast("draw a pen f(i)"), "(draw a pen (call f i))");
+  EXPECT_EQ(ast("style hidden dashed pen 2"), "(style hidden dashed pen 2)");
+  const std::string text = "draw a pen 2";
+  const Script script = parse_ok(text);
+  const auto& draw = std::get<DrawStmt>(script.statements[0].node);
+  EXPECT_FALSE(draw.transform);
+  ASSERT_TRUE(draw.pen);
+  EXPECT_EQ(span_text(text, draw.pen->span), "pen 2");
+  EXPECT_EQ(span_text(text, draw.pen->number->span), "2");
+  EXPECT_EQ(std::string(statement_keyword(parse_ok("pen 1 ()").statements[0])), "pen");
+  // `pen N (` followed by `NAME:` or `)` starts a pen statement, even after a draw on the same line.
+  EXPECT_EQ(dump(parse_ok("draw a\npen 2 (colour: \"red\")")),
+            "(draw a)\n(pen 2 (options colour:\"red\"))\n");
+  EXPECT_EQ(dump(parse_ok("draw a pen 1 pen 2 (width: 1)")), "(draw a pen 1)\n(pen 2 (options width:1))\n");
+  EXPECT_EQ(dump(parse_ok("style hidden dashed\npen 1 (width: 0.2)")),
+            "(style hidden dashed)\n(pen 1 (options width:0.2))\n");
+}
+
+TEST(Parser, Plotters) {
+  EXPECT_EQ(ast("plotter mine {\n  base: \"hp7475a\", unit: 0.025\n  pens: 6\n  newline: true\n}"),
+            "(plotter mine (entries base:\"hp7475a\" unit:0.025 pens:6 newline:true))");
+  EXPECT_EQ(ast("plotter empty {}"), "(plotter empty (entries))");
+  const std::string text = "plotter mine { pens: 6 }";
+  const Script script = parse_ok(text);
+  const auto& plotter = std::get<PlotterStmt>(script.statements[0].node);
+  EXPECT_EQ(span_text(text, plotter.name.span), "mine");
+  ASSERT_EQ(plotter.entries.size(), 1U);
+  EXPECT_EQ(span_text(text, plotter.entries[0].span), "pens: 6");
+  EXPECT_EQ(span_text(text, plotter.entries[0].label->span), "pens");
+  EXPECT_EQ(std::string(statement_keyword(script.statements[0])), "plotter");
+}
+
 TEST(Parser, NewlinesAreWhitespace) {
   const Script a = parse_ok("draw a draw b let c = 1");
   const Script b = parse_ok("draw a\ndraw b\nlet c =\n  1");
@@ -277,6 +351,7 @@ TEST(Parser, NewlinesAreWhitespace) {
   // Contextual words stay names outside their place.
   EXPECT_EQ(ast("let line = face + vertex + frames + hidden"),
             "(let line (+ (+ (+ face vertex) frames) hidden))");
+  EXPECT_EQ(ast("let pen = plotter + custom"), "(let pen (+ plotter custom))");
 }
 
 TEST(Parser, UnicodeAndTabsInColumns) {

@@ -48,13 +48,13 @@ TEST(Robustness, RandomBytes) {
 
 TEST(Robustness, RandomTokenSoups) {
   static constexpr std::array kTokens = {
-      "solid",  "let",     "def",    "return", "for",    "in",     "if",    "else",   "draw",   "at",
-      "camera", "animate", "frames", "fps",    "output", "paper",  "style", "hidden", "dashed", "include",
-      "then",   "and",     "or",     "not",    "true",   "vertex", "face",  "hole",   "line",   "x",
-      "i",      "lookat",  "A4",     "0",      "12",     "1.5",    "2e3",   "1.2.3",  "\"s\"",  "\"{t:03}\"",
-      "\"",     "{",       "}",      "(",      ")",      "[",      "]",     ",",      ":",      "=",
-      "==",     "..",      ".",      "+",      "-",      "*",      "/",     "%",      "<",      ">=",
-      "#c\n",   "\n",      "\t",     "@",      "é",      ";"};
+      "solid",  "let",     "def",    "return", "for",    "in",     "if",    "else",    "draw",   "at",
+      "camera", "animate", "frames", "fps",    "output", "paper",  "style", "hidden",  "dashed", "include",
+      "then",   "and",     "or",     "not",    "true",   "vertex", "face",  "hole",    "line",   "x",
+      "i",      "lookat",  "A4",     "0",      "12",     "1.5",    "2e3",   "1.2.3",   "\"s\"",  "\"{t:03}\"",
+      "\"",     "{",       "}",      "(",      ")",      "[",      "]",     ",",       ":",      "=",
+      "==",     "..",      ".",      "+",      "-",      "*",      "/",     "%",       "<",      ">=",
+      "#c\n",   "\n",      "\t",     "@",      "é",      ";",      "pen",   "plotter", "custom"};
   for (std::uint32_t seed = 0; seed < 1500; ++seed) {
     std::mt19937 rng(seed);
     std::uniform_int_distribution<int> count(0, 60);
@@ -78,6 +78,30 @@ TEST(Robustness, RandomEditsOfTheSketch) {
       "camera main = lookat(eye: (30, 20, 15), target: (0, 0, 0), up: (0, 0, 1), fov: 40)\n"
       "animate frames 48 fps 12\noutput \"landing-{frame:03}.pdf\" paper A4 landscape\nstyle hidden dashed\n";
   static constexpr std::string_view kInsert = "(){}[],=.\"#@x1 \n";
+  for (std::uint32_t seed = 0; seed < 1500; ++seed) {
+    std::mt19937 rng(seed);
+    std::string text = sketch;
+    for (int edits = 1 + static_cast<int>(rng() % 4); edits > 0; --edits) {
+      const std::size_t at = rng() % (text.size() + 1);
+      if (rng() % 2 == 0 && at < text.size()) {
+        text.erase(at, 1 + rng() % 3);
+      } else {
+        text.insert(at, 1, kInsert[rng() % kInsert.size()]);
+      }
+    }
+    check_result(text, seed);
+  }
+}
+
+TEST(Robustness, RandomEditsOfDeviceSettings) {
+  const std::string sketch =
+      "pen 2 (colour: \"red\", width: 0.35)\npen (n + 1) ()\n"
+      "plotter mine {\n  base: \"hp7475a\", pens: 6\n  moves: \"absolute\"\n}\n"
+      "output \"p.hpgl\" paper custom portrait (width: 300, height: 200, margin: 5) plotter \"roland-dxy\"\n"
+      "paper A4 landscape (margin: 10, scale: 0.5)\n"
+      "draw a at translate(1, 0, 0) pen 2\ndraw b pen f(i)\npen 3 (width: 1)\n"
+      "style hidden dashed pen 3\n";
+  static constexpr std::string_view kInsert = "(){}[],=.:\"#@x1 \n";
   for (std::uint32_t seed = 0; seed < 1500; ++seed) {
     std::mt19937 rng(seed);
     std::string text = sketch;

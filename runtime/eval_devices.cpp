@@ -1,0 +1,345 @@
+// Device settings: paper (with its options), pens, plotter profiles, and the pen numbers of `draw ... pen
+// N` and `style hidden dashed pen N`. Option lists — `(margin: 10)`, `(colour: "red")`, a plotter's `{
+// unit: 0.025 }` — are checked in the manner of a solid's options: a missing name, an unknown name, a
+// name given twice, a value of the wrong kind or out of range is an error at that option, with the list
+// of options as the hint.
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <map>
+#include <string_view>
+#include <vector>
+
+#include "core/device/hpgl_profile.hpp"
+#include "core/device/pen_style.hpp"
+#include "runtime/eval_detail.hpp"
+#include "runtime/evaluator.hpp"
+#include "runtime/format_value.hpp"
+
+namespace hlr::runtime {
+
+namespace {
+
+// ---- option lists --------------------------------------------------------------------------------
+
+struct OptionSpec {
+  std::string_view name;
+  ValueKind kind;
+  std::string_view alias = {};  // another spelling of the same option ("color")
+};
+
+struct OptionList {
+  std::string who;      // "paper 'A4': ", prefixed to every message
+  std::string noun;     // "option", or "key" for a plotter's entries
+  std::string example;  // "margin: 10", for an option without a name
+  std::string hint;     // what the options are
+  std::vector<OptionSpec> specs;
+};
+
+struct GivenOption {
+  Value value;
+  lang::SourceSpan span;  // the whole `name: value`
+  std::string written;    // the name as written ("color" for colour)
+};
+using GivenOptions = std::map<std::string, GivenOption, std::less<>>;
+
+std::string kind_wanted(ValueKind kind) {
+  switch (kind) {
+    case ValueKind::Number:
+      return "a number";
+    case ValueKind::Bool:
+      return "true or false";
+    case ValueKind::String:
+      return "a string";
+    default:
+      return kind_with_article(kind);
+  }
+}
+
+// Checks names and kinds, evaluating the values in written order; by canonical name.
+template <typename Eval>
+GivenOptions check_options(const std::vector<lang::Argument>& args, const OptionList& list, Eval&& eval) {
+  GivenOptions given;
+  for (const lang::Argument& arg : args) {
+    if (!arg.label)
+      fail(arg.span, list.who + "each " + list.noun + " needs a name, as in '" + list.example + "'",
+           list.hint);
+    const std::string& name = arg.label->text;
+    const auto spec = std::find_if(list.specs.begin(), list.specs.end(),
+                                   [&](const OptionSpec& s) { return s.name == name || s.alias == name; });
+    if (spec == list.specs.end()) {
+      std::vector<std::string> names;
+      for (const OptionSpec& s : list.specs) names.emplace_back(s.name);
+      const std::string guess = did_you_mean(name, names);
+      fail(arg.span, list.who + "unknown " + list.noun + " '" + name + "'",
+           guess.empty() ? list.hint : guess + " " + list.hint);
+    }
+    const std::string canonical(spec->name);
+    if (const auto first = given.find(canonical); first != given.end()) {
+      lang::Diagnostic d;
+      d.span = arg.span;
+      d.message = list.who + list.noun + " '" + name + "' is given twice";
+      if (first->second.written != name) d.message += " (as '" + first->second.written + "' before)";
+      d.hint = list.hint;
+      d.notes.push_back({first->second.span, "first given here"});
+      throw EvalError(std::move(d));
+    }
+    Value value = eval(*arg.value);
+    if (!value.is(spec->kind))
+      fail(arg.span,
+           list.who + list.noun + " '" + name + "' must be " + kind_wanted(spec->kind) + ", got " +
+               kind_with_article(value.kind()),
+           list.hint);
+    given.emplace(canonical, GivenOption{std::move(value), arg.span, name});
+  }
+  return given;
+}
+
+const GivenOption* find(const GivenOptions& given, std::string_view name) {
+  const auto it = given.find(name);
+  return it == given.end() ? nullptr : &it->second;
+}
+
+// A number option within a range: `ok(x)` says whether x is allowed, `range` says what is.
+template <typename Ok>
+double number_in(const GivenOption& option, const OptionList& list, Ok&& ok, const std::string& range) {
+  const double x = option.value.as_number();
+  if (!std::isfinite(x) || !ok(x))
+    fail(option.span,
+         list.who + list.noun + " '" + option.written + "' must be " + range + " (got " + format_number(x) +
+             ")",
+         list.hint);
+  return x;
+}
+
+bool whole(double x) { return std::floor(x) == x; }
+
+bool equal_ignoring_case(std::string_view a, std::string_view b) {
+  return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) {
+           return std::tolower(static_cast<unsigned char>(x)) == std::tolower(static_cast<unsigned char>(y));
+         });
+}
+
+// ---- paper ------------------------------------------------------------------------------------------
+
+constexpr const char* kPaperHint =
+    "the paper options are margin: millimetres from 0, leaving room on the page, and scale: millimetres "
+    "per drawing unit above 0 (instead of fitting the drawing to the page); 'paper custom' also takes "
+    "width: and height: in millimetres, up to 10000";
+
+std::string paper_list() {
+  std::string out;
+  for (const std::string_view name : paper_names()) out += (out.empty() ? "" : ", ") + std::string(name);
+  return out;
+}
+
+// ---- pens -------------------------------------------------------------------------------------------
+
+constexpr int kMaxPen = 255;
+constexpr double kMaxPenWidthMm = 10;
+constexpr const char* kPenHint =
+    "the pen options are colour: (or color:) \"#rrggbb\", \"#rgb\" or one of black, red, green, blue, cyan, "
+    "magenta, yellow, orange, grey, gray, white, brown, purple; width: millimetres above 0 and at most 10";
+
+// ---- plotters ---------------------------------------------------------------------------------------
+
+std::string plotter_hint() {
+  return "the keys are base: a built-in profile to start from (" + hpgl_profile_list() +
+         "; default generic), unit: millimetres per plotter unit (0.001 to 1), pens: 1 to 255, "
+         "velocity: cm/s above 0 and at most 200, moves: \"relative\" or \"absolute\", "
+         "max_pairs: coordinate pairs per PD (1 to 10000), newline: true or false, "
+         "pen_speed and travel_speed: mm/s above 0, lift_time: seconds from 0, info: a string";
+}
+
+}  // namespace
+
+int Evaluator::eval_pen_number(const lang::Expr& expr, const ScopePtr& scope) {
+  const double pen = eval_number(expr, scope, "the pen number");
+  if (!(pen >= 1 && pen <= kMaxPen) || !whole(pen))
+    fail(expr.span, "the pen number must be a whole number from 1 to 255, got " + format_number(pen));
+  return static_cast<int>(pen);
+}
+
+void Evaluator::set_paper(const lang::PaperSpec& paper, const lang::Stmt& stmt, const ScopePtr& scope) {
+  if (out_.paper) already_set(stmt.span, "paper", out_.paper->span);
+  if (!paper.size) return;
+  const std::string& size = paper.size->text;
+  const bool custom = equal_ignoring_case(size, "custom");
+  // Landscape unless the script says portrait: drawings are mostly wider than tall, and it is the
+  // devices' default.
+  const bool landscape = paper.orientation != lang::Orientation::Portrait;
+  std::optional<Paper> found = custom ? std::optional<Paper>(Paper{}) : paper_by_name(size, landscape);
+  if (!found)
+    fail(paper.size->span, "unknown paper size '" + size + "'",
+         "use one of " + paper_list() + ", or 'custom (width: W, height: H)' in millimetres");
+
+  const OptionList list{"paper '" + size + "': ",
+                        "option",
+                        "margin: 10",
+                        kPaperHint,
+                        {{"margin", ValueKind::Number},
+                         {"scale", ValueKind::Number},
+                         {"width", ValueKind::Number},
+                         {"height", ValueKind::Number}}};
+  const GivenOptions given =
+      check_options(paper.options, list, [&](const lang::Expr& e) { return eval(e, scope); });
+  PaperSetting setting;
+  setting.size = size;
+  setting.span = stmt.span;
+
+  const GivenOption* width = find(given, "width");
+  const GivenOption* height = find(given, "height");
+  if (custom) {
+    if (!width || !height) {
+      const std::string missing = !width && !height ? "width: and height:" : !width ? "width:" : "height:";
+      fail(paper.size->span, "paper custom needs " + missing + " in millimetres",
+           "write 'paper custom (width: 300, height: 200)'; 'landscape' or 'portrait' after 'custom' "
+           "turns the sheet");
+    }
+    auto size_ok = [](double x) { return x > 0 && x <= kMaxPaperSideMm; };
+    found->width_mm = number_in(*width, list, size_ok, "above 0 and at most 10000 mm");
+    found->height_mm = number_in(*height, list, size_ok, "above 0 and at most 10000 mm");
+    // An orientation word turns the sheet: landscape is at least as wide as high, portrait the reverse.
+    if ((paper.orientation == lang::Orientation::Landscape && found->width_mm < found->height_mm) ||
+        (paper.orientation == lang::Orientation::Portrait && found->width_mm > found->height_mm))
+      std::swap(found->width_mm, found->height_mm);
+  } else if (const GivenOption* only_custom = width ? width : height) {
+    fail(only_custom->span, list.who + "option '" + only_custom->written + "' is only for 'paper custom'",
+         size + " has a fixed size; for a size of your own write 'paper custom (width: 300, height: 200)'");
+  }
+  setting.paper = *found;
+
+  if (const GivenOption* margin = find(given, "margin")) {
+    setting.margin_mm = number_in(
+        *margin, list, [](double x) { return x >= 0; }, "0 or more millimetres");
+    const double shorter = std::min(found->width_mm, found->height_mm);
+    if (!(2 * *setting.margin_mm < shorter))
+      fail(margin->span,
+           list.who + "a margin of " + format_number(*setting.margin_mm) + " mm leaves no room on " +
+               format_number(found->width_mm) + " × " + format_number(found->height_mm) + " mm",
+           "the margins on both sides must be less than the paper's shorter side (" + format_number(shorter) +
+               " mm)");
+  }
+  if (const GivenOption* scale = find(given, "scale"))
+    setting.mm_per_unit = number_in(
+        *scale, list, [](double x) { return x > 0; }, "above 0 millimetres per unit");
+  out_.paper = std::move(setting);
+}
+
+void Evaluator::exec_pen(const lang::PenStmt& pen, const lang::Stmt& stmt, const ScopePtr& scope) {
+  PenSetting setting;
+  setting.pen = eval_pen_number(*pen.number, scope);
+  setting.span = stmt.span;
+  for (const PenSetting& p : out_.pens)
+    if (p.pen == setting.pen) {
+      lang::Diagnostic d;
+      d.span = pen.number->span;
+      d.message = "pen " + std::to_string(setting.pen) + " is already set";
+      d.hint = "set each pen once: one 'pen " + std::to_string(setting.pen) + " (...)' statement";
+      d.notes.push_back({p.span, "it was set here"});
+      throw EvalError(std::move(d));
+    }
+  const OptionList list{"pen " + std::to_string(setting.pen) + ": ",
+                        "option",
+                        "colour: \"red\"",
+                        kPenHint,
+                        {{"colour", ValueKind::String, "color"}, {"width", ValueKind::Number}}};
+  const GivenOptions given =
+      check_options(pen.options, list, [&](const lang::Expr& e) { return eval(e, scope); });
+  if (const GivenOption* colour = find(given, "colour")) {
+    const std::string& text = colour->value.as_string();
+    if (!parse_colour(text)) fail(colour->span, list.who + "unknown colour \"" + text + "\"", kPenHint);
+    setting.colour = text;
+  }
+  if (const GivenOption* width = find(given, "width"))
+    setting.width_mm = number_in(
+        *width, list, [](double x) { return x > 0 && x <= kMaxPenWidthMm; }, "above 0 and at most 10 mm");
+  out_.pens.push_back(std::move(setting));
+}
+
+void Evaluator::exec_plotter(const lang::PlotterStmt& plotter, const lang::Stmt& stmt,
+                             const ScopePtr& scope) {
+  const std::string& name = plotter.name.text;
+  if (hpgl_profile_by_name(name))
+    fail(plotter.name.span, "'" + name + "' is the name of a built-in plotter profile",
+         "give yours another name and start from the built-in one: 'plotter my_" + name + " { base: \"" +
+             name + "\", ... }'; or use it as it is: 'output \"plot.hpgl\" plotter " + name + "'");
+  for (const PlotterSetting& p : out_.plotters)
+    if (p.profile.name == name) {
+      lang::Diagnostic d;
+      d.span = plotter.name.span;
+      d.message = "plotter '" + name + "' is already declared";
+      d.hint = "give each plotter its own name";
+      d.notes.push_back({p.span, "the first 'plotter " + name + "' is here"});
+      throw EvalError(std::move(d));
+    }
+  const OptionList list{"plotter '" + name + "': ",
+                        "key",
+                        "pens: 6",
+                        plotter_hint(),
+                        {{"base", ValueKind::String},
+                         {"unit", ValueKind::Number},
+                         {"pens", ValueKind::Number},
+                         {"velocity", ValueKind::Number},
+                         {"moves", ValueKind::String},
+                         {"max_pairs", ValueKind::Number},
+                         {"newline", ValueKind::Bool},
+                         {"pen_speed", ValueKind::Number},
+                         {"travel_speed", ValueKind::Number},
+                         {"lift_time", ValueKind::Number},
+                         {"info", ValueKind::String}}};
+  const GivenOptions given =
+      check_options(plotter.entries, list, [&](const lang::Expr& e) { return eval(e, scope); });
+
+  // The declared profile starts as a copy of its base.
+  HpglProfile profile;
+  if (const GivenOption* base = find(given, "base")) {
+    const std::optional<HpglProfile> found = hpgl_profile_by_name(base->value.as_string());
+    if (!found) {
+      std::vector<std::string> names;
+      for (const HpglProfile& p : builtin_hpgl_profiles()) names.push_back(p.name);
+      const std::string guess = did_you_mean(base->value.as_string(), names);
+      fail(base->span, list.who + "unknown base profile \"" + base->value.as_string() + "\"",
+           (guess.empty() ? "" : guess + " ") + "the built-in profiles are " + hpgl_profile_list());
+    }
+    profile = *found;
+  } else if (std::optional<HpglProfile> generic = hpgl_profile_by_name("generic")) {
+    profile = std::move(*generic);
+  }
+  profile.name = name;
+
+  auto positive = [](double x) { return x > 0; };
+  if (const GivenOption* o = find(given, "unit"))
+    profile.unit_mm = number_in(
+        *o, list, [](double x) { return x >= 0.001 && x <= 1; }, "from 0.001 to 1 mm");
+  if (const GivenOption* o = find(given, "pens"))
+    profile.pen_count = static_cast<int>(number_in(
+        *o, list, [](double x) { return x >= 1 && x <= kMaxPen && whole(x); },
+        "a whole number from 1 to 255"));
+  if (const GivenOption* o = find(given, "velocity"))
+    profile.velocity_cm_s = number_in(
+        *o, list, [](double x) { return x > 0 && x <= 200; }, "above 0 and at most 200 cm/s");
+  if (const GivenOption* o = find(given, "moves")) {
+    const std::string& moves = o->value.as_string();
+    if (moves != "relative" && moves != "absolute")
+      fail(o->span, list.who + "key 'moves' must be \"relative\" or \"absolute\", got \"" + moves + "\"",
+           list.hint);
+    profile.relative = moves == "relative";
+  }
+  if (const GivenOption* o = find(given, "max_pairs"))
+    profile.max_pairs_per_pd = static_cast<int>(number_in(
+        *o, list, [](double x) { return x >= 1 && x <= 10000 && whole(x); },
+        "a whole number from 1 to 10000"));
+  if (const GivenOption* o = find(given, "newline")) profile.newline = o->value.as_bool();
+  if (const GivenOption* o = find(given, "pen_speed"))
+    profile.speeds.pen_down_mm_per_s = number_in(*o, list, positive, "above 0 mm/s");
+  if (const GivenOption* o = find(given, "travel_speed"))
+    profile.speeds.pen_up_mm_per_s = number_in(*o, list, positive, "above 0 mm/s");
+  if (const GivenOption* o = find(given, "lift_time"))
+    profile.speeds.lift_s = number_in(
+        *o, list, [](double x) { return x >= 0; }, "0 or more seconds");
+  if (const GivenOption* o = find(given, "info")) profile.info = o->value.as_string();
+  out_.plotters.push_back({std::move(profile), stmt.span});
+}
+
+}  // namespace hlr::runtime
