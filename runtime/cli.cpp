@@ -10,6 +10,8 @@
 #include <thread>
 
 #include "core/device/atomic_file.hpp"
+#include "core/device/cairo_device.hpp"
+#include "core/device/page_plot.hpp"
 #include "runtime/demo_scene.hpp"
 #include "runtime/eval_error.hpp"
 #include "runtime/frame_runner.hpp"
@@ -59,10 +61,16 @@ int run_demo(const CliOptions& o, std::ostream& out, std::ostream& err) {
   HlrOptions options;
   options.include_hidden = o.hidden.value_or(false);
   DemoStats stats;
-  const auto pages = render_carrier_demo(o.demo_frames, options, stats);
-  PdfOptions pdf;
+  const auto drawings = render_carrier_demo(o.demo_frames, options, stats);
+  PagePlotOptions plot;
+  plot.include_hidden = options.include_hidden;
+  plot.plan.order = o.device.pen_order;
+  std::vector<PlotPage> pages;
+  for (const DrawingPage& d : drawings) pages.push_back(plot_page(d.segments, d.frame, d.caption, plot).page);
+  CairoOptions pdf;
+  pdf.format = CairoFormat::Pdf;
   pdf.title = "hlrscript demo: Desens' carrier";
-  write_pdf(target, pages, pdf);
+  write_cairo(target, pages, pdf);
   char line[256];
   std::snprintf(line, sizeof line,
                 "wrote %s: %zu pages, %zu segments, hidden-line time %.1f ms (%.2f ms per frame)\n",
@@ -70,6 +78,22 @@ int run_demo(const CliOptions& o, std::ostream& out, std::ostream& err) {
                 stats.seconds * 1e3 / static_cast<double>(stats.frames));
   out << line;
   return kExitOk;
+}
+
+void print_plan_stats(std::ostream& err, const OutputTarget& target,
+                      const std::vector<WrittenFrame>& written) {
+  for (const WrittenFrame& w : written) {
+    const PlanStats& s = w.plan;
+    char line[400];
+    std::snprintf(
+        line, sizeof line,
+        "frame %d -> %s: %zu visible pieces, %zu after merging; pen-down %.1f mm, pen-up %.1f mm "
+        "(mean %.1f, median %.1f), %zu lifts (lower bound %zu), plotting ~%.1f s, planned in %.2f ms\n",
+        w.frame, target.path.filename().string().c_str(), w.visible_segments, s.merged_pieces, s.pen_down_mm,
+        s.pen_up_mm, s.pen_up_mean_mm, s.pen_up_median_mm, s.lifts, s.lift_lower_bound, s.plot_seconds,
+        s.planning_ms);
+    err << line;
+  }
 }
 
 void print_stats(std::ostream& err, const std::vector<FrameOutput>& frames) {
@@ -112,6 +136,12 @@ int run_script(const CliOptions& o, std::ostream& out, std::ostream& err) {
     const std::vector<int> frames = select_frames(frame_count, o.frames, o.shard);
     // Mistakes visible in frame 0 are reported before any rendering.
     choose_camera(first, o.camera, o.script);
+    if (o.output && !has_frame_field(*o.output)) {
+      // A name without {frame} for several frames: refused now for one-frame devices, not after rendering.
+      std::vector<FrameName> all;
+      for (const int f : frames) all.push_back({f, std::nullopt});
+      plan_outputs(o.output, all, *program);
+    }
     for (const OutputTarget& t : plan_outputs(o.output, {FrameName{0, first.output}}, *program)) {
       try {
         check_writable(t);
@@ -162,9 +192,11 @@ int run_script(const CliOptions& o, std::ostream& out, std::ostream& err) {
     WriteOptions write;
     write.title = o.script;
     write.frame_count = frame_count;
+    write.device = o.device;
     for (const OutputTarget& t : targets) {
       try {
-        write_output(t, result.frames, write);
+        const std::vector<WrittenFrame> written = write_output(t, result.frames, write);
+        if (o.stats) print_plan_stats(err, t, written);
       } catch (const DeviceError& e) {
         return report(err, e, t, *program);
       }

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "runtime/frame_selection.hpp"
+#include "runtime/output_plan.hpp"
 
 namespace hlr::runtime {
 
@@ -30,6 +31,7 @@ struct CliOptions {
   std::optional<bool> hidden;
   unsigned jobs = 1;
   bool stats = false;
+  DeviceOptions device;  // --paper, --margin, --scale, --dpi, --plotter, --pen-order, ...
   int demo_frames = 12;  // --demo --frames N
 };
 

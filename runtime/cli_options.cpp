@@ -2,9 +2,11 @@
 // (exit 64) that says what was expected.
 #include <boost/program_options.hpp>
 #include <charconv>
+#include <cstdio>
 #include <ostream>
 #include <sstream>
 
+#include "core/device/page_layout.hpp"
 #include "runtime/cli.hpp"
 #include "runtime/output_plan.hpp"
 
@@ -18,7 +20,8 @@ po::options_description visible_options() {
   po::options_description o("options");
   o.add_options()                                                //
       ("output,o", po::value<std::string>()->value_name("OUT"),  //
-       "output file: .pdf (one page per frame) or .json; {frame:04} in the name writes one file per frame")  //
+       "output file: .pdf (one page per frame), .svg, .png, .hpgl (one frame per file) or .json; {frame:04} "
+       "in the name writes one file per frame")  //
       ("camera", po::value<std::string>()->value_name("NAME"),
        "camera to draw with (default: the last declared)")  //
       ("frames", po::value<std::string>()->value_name("A-B"),
@@ -27,8 +30,28 @@ po::options_description visible_options() {
        "render the frames f with f % N == K-1 (job K of N; with --frames, of those)")                       //
       ("jobs,j", po::value<std::string>()->value_name("N"), "render N frames at a time (0: one per core)")  //
       ("hidden", po::value<std::string>()->value_name("off|dashed"),
-       "hidden lines: off, or dashed (overrides the script)")                                               //
-      ("stats", "print per-frame statistics to stderr")                                                     //
+       "hidden lines: off, or dashed (overrides the script)")                       //
+      ("stats", "print per-frame statistics (hidden-line and pen plan) to stderr")  //
+      ("paper", po::value<std::string>()->value_name("SIZE"),
+       "paper: A0-A6, Letter, Legal, Tabloid or WxH in mm (e.g. 420x297); overrides the script")      //
+      ("landscape", "landscape paper (the default)")                                                  //
+      ("portrait", "portrait paper")                                                                  //
+      ("margin", po::value<std::string>()->value_name("MM"), "margin on every side (default 12 mm)")  //
+      ("scale", po::value<std::string>()->value_name("MM"),
+       "1 picture unit = MM millimetres, centred, instead of fitting the page")           //
+      ("dpi", po::value<std::string>()->value_name("N"), "PNG resolution (default 150)")  //
+      ("line-width", po::value<std::string>()->value_name("MM"),
+       "pen width on PDF/SVG/PNG (default 0.25)")  //
+      ("plotter", po::value<std::string>()->value_name("NAME"),
+       "HPGL plotter profile: generic (default), hp7475a, hp7440a, hp7550, roland-dxy, or one the script "
+       "declares")                                                     //
+      ("clip", "clip HPGL to the plotter's range instead of failing")  //
+      ("hpgl-moves", po::value<std::string>()->value_name("relative|absolute"),
+       "HPGL moves (default: the profile's)")  //
+      ("pen-order", po::value<std::string>()->value_name("none|greedy|optimized"),
+       "pen planning: file order, greedy nearest-end, or optimized (default)")  //
+      ("plan-budget", po::value<std::string>()->value_name("MS"),
+       "time budget of the optimized pen plan per frame (default 200 ms)")                                  //
       ("demo", "render the built-in demo (Desens' aircraft carrier); --frames N sets its approach frames")  //
       ("help,h", "show this help")                                                                          //
       ("version", "show the version");
@@ -40,6 +63,10 @@ constexpr const char* kExamples =
     "  hlrscript scene.hls                               # every frame to scene.pdf, one page each\n"
     "  hlrscript scene.hls -o top.pdf --camera top       # another camera, another file\n"
     "  hlrscript scene.hls -o lines.json                 # the visible segments as JSON\n"
+    "  hlrscript scene.hls -o scene.svg --paper A3       # SVG on A3 landscape\n"
+    "  hlrscript scene.hls -o scene.png --dpi 300        # a quick raster\n"
+    "  hlrscript scene.hls -o scene.hpgl --plotter hp7475a --paper A4   # for an HP 7475A\n"
+    "  hlrscript landing.hls -o 'f-{frame:03}.hpgl'      # one plotter file per frame\n"
     "  hlrscript landing.hls -o 'f-{frame:04}.pdf' --frames 0-99 --jobs 2\n"
     "  hlrscript landing.hls -o 'f-{frame:04}.pdf' --shard 3/8    # job 3 of 8: frames 2, 10, 18, ...\n"
     "  hlrscript check scene.hls                         # evaluate every frame, write nothing\n"
@@ -55,12 +82,83 @@ std::nullopt_t usage_error(std::ostream& err, const std::string& message) {
   return std::nullopt;
 }
 
+// A finite number in [lo, hi] from an option's text.
+bool number_option(const po::variables_map& vm, const char* name, double lo, double hi,
+                   std::optional<double>& out, std::string& error) {
+  if (!vm.count(name)) return true;
+  const std::string text = vm[name].as<std::string>();
+  double v = 0;
+  const auto r = std::from_chars(text.data(), text.data() + text.size(), v);
+  if (r.ec != std::errc() || r.ptr != text.data() + text.size() || !(v >= lo && v <= hi)) {
+    char buf[160];
+    std::snprintf(buf, sizeof buf, "--%s %s: expected a number from %g to %g", name, text.c_str(), lo, hi);
+    error = buf;
+    return false;
+  }
+  out = v;
+  return true;
+}
+
+bool parse_device_options(const po::variables_map& vm, DeviceOptions& d, std::string& error) {
+  if (vm.count("landscape") && vm.count("portrait")) {
+    error = "--landscape and --portrait exclude each other";
+    return false;
+  }
+  if (vm.count("landscape")) d.landscape = true;
+  if (vm.count("portrait")) d.landscape = false;
+  if (vm.count("paper")) {
+    d.paper = vm["paper"].as<std::string>();
+    if (!parse_paper(*d.paper, d.landscape.value_or(true))) {
+      std::string names;
+      for (const std::string_view n : paper_names()) names += (names.empty() ? "" : ", ") + std::string(n);
+      error = "--paper " + *d.paper + ": unknown paper size; use " + names + " or WxH in mm (e.g. 420x297)";
+      return false;
+    }
+  }
+  std::optional<double> dpi;
+  if (!number_option(vm, "margin", 0, 1000, d.margin_mm, error) ||
+      !number_option(vm, "scale", 1e-9, 1e9, d.mm_per_unit, error) ||
+      !number_option(vm, "dpi", 10, 2400, dpi, error) ||
+      !number_option(vm, "line-width", 0.01, 10, d.line_width_mm, error))
+    return false;
+  if (dpi) d.dpi = *dpi;
+  std::optional<double> budget;
+  if (!number_option(vm, "plan-budget", 0, 600000, budget, error)) return false;
+  if (budget) d.plan_budget_ms = *budget;
+  if (vm.count("plotter")) d.plotter = vm["plotter"].as<std::string>();
+  d.clip = vm.count("clip") > 0;
+  if (vm.count("hpgl-moves")) {
+    const std::string v = vm["hpgl-moves"].as<std::string>();
+    if (v != "relative" && v != "absolute") {
+      error = "--hpgl-moves takes 'relative' or 'absolute', not '" + v + "'";
+      return false;
+    }
+    d.relative = v == "relative";
+  }
+  if (vm.count("pen-order")) {
+    const std::string v = vm["pen-order"].as<std::string>();
+    if (v == "none")
+      d.pen_order = PenOrder::None;
+    else if (v == "greedy")
+      d.pen_order = PenOrder::Greedy;
+    else if (v == "optimized" || v == "optimised")
+      d.pen_order = PenOrder::Optimized;
+    else {
+      error = "--pen-order takes none, greedy or optimized, not '" + v + "'";
+      return false;
+    }
+  }
+  return true;
+}
+
 }  // namespace
 
 std::string usage_text() {
   std::ostringstream s;
-  s << "usage: hlrscript FILE.hls [-o OUT.pdf|OUT.json] [--camera NAME] [--frames A-B] [--shard K/N]\n"
-       "                          [--jobs N] [--hidden off|dashed] [--stats]\n"
+  s << "usage: hlrscript FILE.hls [-o OUT.pdf|.svg|.png|.hpgl|.json] [--camera NAME] [--frames A-B]\n"
+       "                          [--shard K/N] [--jobs N] [--hidden off|dashed] [--stats]\n"
+       "                          [--paper SIZE] [--portrait] [--margin MM] [--scale MM] [--dpi N]\n"
+       "                          [--plotter NAME] [--clip] [--pen-order none|greedy|optimized]\n"
        "       hlrscript check FILE.hls [--camera NAME] [--frames A-B] [--shard K/N]\n"
        "       hlrscript --demo [-o OUT.pdf] [--frames N] [--hidden off|dashed]\n"
        "       hlrscript --help | --version\n"
@@ -149,6 +247,7 @@ std::optional<CliOptions> parse_cli(int argc, const char* const argv[], std::ost
     o.hidden = v == "dashed";
   }
   o.stats = vm.count("stats") > 0;
+  if (!parse_device_options(vm, o.device, error)) return usage_error(err, error);
   if (o.mode == CliOptions::Mode::Check && o.output) return usage_error(err, "check writes nothing; drop -o");
   return o;
 }

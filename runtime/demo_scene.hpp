@@ -4,7 +4,7 @@
 
 #include <vector>
 
-#include "core/device/pdf_device.hpp"
+#include "core/device/drawing_page.hpp"
 #include "core/hlr/render_frame.hpp"
 
 namespace hlr {

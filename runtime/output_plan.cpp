@@ -5,9 +5,6 @@
 #include <cstdio>
 #include <map>
 
-#include "core/device/atomic_file.hpp"
-#include "core/device/json_device.hpp"
-#include "core/device/pdf_device.hpp"
 #include "runtime/eval_error.hpp"
 #include "runtime/format_value.hpp"
 
@@ -15,14 +12,37 @@ namespace hlr::runtime {
 
 namespace fs = std::filesystem;
 
-const char* supported_extensions() { return "pdf, json"; }
+const char* supported_extensions() { return "pdf, svg, png, hpgl (or .plt), json"; }
 
 std::optional<Device> device_for(const fs::path& path) {
   std::string ext = path.extension().string();
   std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
   if (ext == ".pdf") return Device::Pdf;
+  if (ext == ".svg") return Device::Svg;
+  if (ext == ".png") return Device::Png;
+  if (ext == ".hpgl" || ext == ".plt" || ext == ".hpg") return Device::Hpgl;
   if (ext == ".json") return Device::Json;
   return std::nullopt;
+}
+
+bool single_frame(Device device) {
+  return device == Device::Svg || device == Device::Png || device == Device::Hpgl;
+}
+
+const char* device_name(Device device) {
+  switch (device) {
+    case Device::Pdf:
+      return "PDF";
+    case Device::Svg:
+      return "SVG";
+    case Device::Png:
+      return "PNG";
+    case Device::Hpgl:
+      return "HPGL";
+    case Device::Json:
+      return "JSON";
+  }
+  return "?";
 }
 
 bool has_frame_field(const std::string& pattern) { return pattern.find('{') != std::string::npos; }
@@ -89,14 +109,15 @@ std::vector<OutputTarget> plan_outputs(const std::optional<std::string>& cli_pat
       path = has_frame_field(*cli_pattern) ? substitute_frame(*cli_pattern, frames[i].frame) : *cli_pattern;
       problem = output_problem(path, program);
       if (!problem.empty())
-        throw RunError("-o " + problem, "choose a name ending in .pdf or .json that is not an input file",
+        throw RunError("-o " + problem,
+                       "choose a name ending in .pdf, .svg, .png, .hpgl or .json that is not an input file",
                        64);
     } else if (frames[i].script_output) {
       path = frames[i].script_output->name;
       problem = output_problem(path, program);
       if (!problem.empty())
         fail(frames[i].script_output->span, "output " + problem,
-             "choose a name ending in .pdf or .json that is not an input file");
+             "choose a name ending in .pdf, .svg, .png, .hpgl or .json that is not an input file");
     } else {
       path = fallback;
       problem = output_problem(path, program);
@@ -107,71 +128,20 @@ std::vector<OutputTarget> plan_outputs(const std::optional<std::string>& cli_pat
       targets.push_back({path, *device_for(path), {}, std::nullopt});
       if (!cli_pattern && frames[i].script_output) targets.back().span = frames[i].script_output->span;
     }
-    targets[it->second].frames.push_back(i);
+    OutputTarget& target = targets[it->second];
+    target.frames.push_back(i);
+    if (target.frames.size() == 2 && single_frame(target.device)) {
+      const std::string message = "'" + path.string() + "' would hold several frames (" +
+                                  std::to_string(frames[target.frames[0]].frame) + " and " +
+                                  std::to_string(frames[i].frame) + "), but one " +
+                                  device_name(target.device) + " file holds one frame";
+      const std::string hint = "put {frame:03} in the name to write one file per frame, e.g. '" +
+                               path.stem().string() + "-{frame:03}" + path.extension().string() + "'";
+      if (target.span) fail(*target.span, "output " + message, hint);
+      throw RunError((cli_pattern ? "-o " : "") + message, hint, 64);
+    }
   }
   return targets;
-}
-
-namespace {
-
-std::string caption_for(const FrameOutput& f, const WriteOptions& options) {
-  char buf[256];
-  if (options.frame_count > 1)
-    std::snprintf(buf, sizeof buf, "%s   frame %d of %d (t = %.4g, %.4g s)   camera %s",
-                  options.title.c_str(), f.time.frame, options.frame_count, f.time.t, f.time.time,
-                  f.camera_name.c_str());
-  else
-    std::snprintf(buf, sizeof buf, "%s   camera %s", options.title.c_str(), f.camera_name.c_str());
-  return buf;
-}
-
-void write_pdf_target(const OutputTarget& target, const std::vector<FrameOutput>& frames,
-                      const WriteOptions& options) {
-  std::vector<DrawingPage> pages;
-  pages.reserve(target.frames.size());
-  for (const std::size_t i : target.frames)
-    pages.push_back({frames[i].segments, frames[i].camera.frame, caption_for(frames[i], options)});
-  PdfOptions pdf;
-  pdf.title = options.title;
-  if (const auto& paper = frames[target.frames.front()].paper) {
-    pdf.page_width_mm = paper->paper.width_mm;
-    pdf.page_height_mm = paper->paper.height_mm;
-  }
-  write_pdf(target.path, pages, pdf);
-}
-
-// The JSON device (core/device/json_device.hpp, schema hlrscript.lines/1): one entry per frame.
-void write_json_target(const OutputTarget& target, const std::vector<FrameOutput>& frames,
-                       const WriteOptions& options) {
-  std::vector<JsonFrame> json;
-  json.reserve(target.frames.size());
-  JsonOptions o;
-  o.title = options.title;
-  for (const std::size_t i : target.frames) {
-    const FrameOutput& f = frames[i];
-    json.push_back({f.time.frame, f.time.time, f.camera, f.segments, f.object_names});
-    o.include_hidden = o.include_hidden || f.hidden;
-  }
-  if (const auto& paper = frames[target.frames.front()].paper) o.paper = paper->paper;
-  write_json(target.path, json, o);
-}
-
-}  // namespace
-
-void check_writable(const OutputTarget& target) {
-  const fs::path dir = target.path.has_parent_path() ? target.path.parent_path() : fs::path(".");
-  std::error_code ec;
-  if (!fs::is_directory(dir, ec))  // worded as write_atomically() words it
-    throw DeviceError("cannot write '" + target.path.string() + "': directory '" + dir.string() +
-                      "' does not exist");
-}
-
-void write_output(const OutputTarget& target, const std::vector<FrameOutput>& frames,
-                  const WriteOptions& options) {
-  if (target.device == Device::Pdf)
-    write_pdf_target(target, frames, options);
-  else
-    write_json_target(target, frames, options);
 }
 
 }  // namespace hlr::runtime

@@ -1,7 +1,10 @@
 // Where the frames go. The name comes from -o (where {frame} and {frame:FMT} are replaced by the frame
 // number), else from the script's `output` statement (evaluated per frame), else FILE.pdf in the working
 // directory. Frames whose names are equal share one file (PDF pages, JSON frames) in frame order; a
-// name that differs per frame gives one file per frame. The extension picks the device.
+// name that differs per frame gives one file per frame. The extension picks the device; SVG, PNG and
+// HPGL hold one frame per file, so several frames sharing such a name is an error that asks for
+// {frame:03} in the name. Writing (runtime/output_writer.cpp) lays every frame out on its page, plans the
+// pen strokes once and hands the same strokes to the device.
 #pragma once
 
 #include <filesystem>
@@ -9,12 +12,17 @@
 #include <string>
 #include <vector>
 
+#include "core/plan/pen_plan.hpp"
 #include "runtime/frame_runner.hpp"
 #include "runtime/program.hpp"
 
 namespace hlr::runtime {
 
-enum class Device { Pdf, Json };
+enum class Device { Pdf, Svg, Png, Hpgl, Json };
+
+// Devices that hold a single frame per file.
+bool single_frame(Device device);
+const char* device_name(Device device);  // "PDF", "SVG", ...
 
 struct OutputTarget {
   std::filesystem::path path;
@@ -28,7 +36,7 @@ struct FrameName {
   std::optional<OutputSetting> script_output;
 };
 
-// "pdf, json": for messages.
+// "pdf, svg, png, hpgl (or .plt), json": for messages.
 const char* supported_extensions();
 std::optional<Device> device_for(const std::filesystem::path& path);
 
@@ -42,15 +50,39 @@ std::string substitute_frame(const std::string& pattern, int frame);
 std::vector<OutputTarget> plan_outputs(const std::optional<std::string>& cli_pattern,
                                        const std::vector<FrameName>& frames, const Program& program);
 
+// Device settings from the command line; each overrides the script's setting when given.
+struct DeviceOptions {
+  std::optional<std::string> paper;          // --paper A3 | 420x297
+  std::optional<bool> landscape;             // --landscape / --portrait
+  std::optional<double> margin_mm;           // --margin
+  std::optional<double> mm_per_unit;         // --scale: 1 picture unit = N mm instead of fit-to-page
+  double dpi = 150;                          // --dpi (PNG)
+  std::optional<double> line_width_mm;       // --line-width: every pen's width (cairo devices)
+  std::optional<std::string> plotter;        // --plotter NAME (HPGL profile)
+  bool clip = false;                         // --clip: clip HPGL to the plotter's range instead of failing
+  std::optional<bool> relative;              // --hpgl-moves relative|absolute
+  PenOrder pen_order = PenOrder::Optimized;  // --pen-order
+  double plan_budget_ms = 200;               // --plan-budget (per frame, Optimized only)
+};
+
 struct WriteOptions {
   std::string title;    // PDF metadata and captions: the script's name
   int frame_count = 1;  // of the animation, for captions
+  DeviceOptions device;
+};
+
+// What writing a target drew, frame by frame: for --stats.
+struct WrittenFrame {
+  int frame = 0;
+  PlanStats plan;
+  std::size_t visible_segments = 0;
 };
 
 // Throws DeviceError when the target's directory does not exist: checked before any frame is rendered.
 void check_writable(const OutputTarget& target);
-// Writes one target atomically. Throws DeviceError.
-void write_output(const OutputTarget& target, const std::vector<FrameOutput>& frames,
-                  const WriteOptions& options);
+// Writes one target atomically. Throws DeviceError; a script mistake found only now (an unknown plotter
+// named by the output statement) throws EvalError at its span, a CLI one RunError (64).
+std::vector<WrittenFrame> write_output(const OutputTarget& target, const std::vector<FrameOutput>& frames,
+                                       const WriteOptions& options);
 
 }  // namespace hlr::runtime

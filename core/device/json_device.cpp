@@ -9,6 +9,7 @@
 #include <utility>
 
 #include "core/device/atomic_file.hpp"
+#include "core/device/page_layout.hpp"
 
 namespace hlr {
 namespace {
@@ -16,29 +17,14 @@ namespace {
 // Keys keep the schema's order (ordered_json), so the text reads like the documentation and is stable.
 using Json = nlohmann::ordered_json;
 
-// The grid strokes are snapped to before joining: far below any pen's resolution, far above rounding noise.
-constexpr double kSnapPerMm = 1e6;
-
-double snap(double mm) {
-  // Beyond 1e15 mm a double's spacing already exceeds the grid, and the product could overflow.
-  return std::fabs(mm) < 1e15 ? std::round(mm * kSnapPerMm) / kSnapPerMm : mm;
-}
-
-using Polyline = std::vector<Point2>;
-
-double polyline_length(const Polyline& line) {
-  double sum = 0;
-  for (std::size_t i = 1; i < line.size(); ++i) sum += distance(line[i - 1], line[i]);
-  return sum;
-}
-
 // One frame's conversion; `where` prefixes every error so the caller can find the offending frame.
 class FrameWriter {
  public:
-  FrameWriter(const JsonFrame& frame, const JsonOptions& options, const PageSpec& spec)
-      : f_(frame), o_(options), where_("frame " + std::to_string(frame.frame) + ": ") {
-    layout_ = fit_to_page(f_.camera.frame, f_.segments, spec);
-  }
+  FrameWriter(const JsonFrame& frame, const JsonOptions& options)
+      : f_(frame),
+        o_(options),
+        where_("frame " + std::to_string(frame.frame) + ": "),
+        layout_(frame.plot.layout) {}
 
   Json build() const {
     Json j;
@@ -57,10 +43,13 @@ class FrameWriter {
       segments.push_back(segment(s));
     }
     j["segments"] = std::move(segments);
-    const std::vector<Polyline> strokes = build_strokes(false);
-    j["strokes"] = strokes_json(strokes);
-    if (o_.include_hidden) j["hidden_strokes"] = strokes_json(build_strokes(true));
-    j["stats"] = stats(strokes, visible);
+    j["strokes"] = strokes_json(StrokeLayer::Visible);
+    j["stroke_pens"] = pens_json(StrokeLayer::Visible);
+    if (o_.include_hidden) {
+      j["hidden_strokes"] = strokes_json(StrokeLayer::Hidden);
+      j["hidden_stroke_pens"] = pens_json(StrokeLayer::Hidden);
+    }
+    j["stats"] = stats(visible);
     return j;
   }
 
@@ -129,58 +118,43 @@ class FrameWriter {
     return j;
   }
 
-  Point2 page_point(Point2 picture) const {
-    const Point2 mm = layout_.to_page_mm(picture);
-    return {snap(number(mm.x, "page coordinate")), snap(number(mm.y, "page coordinate"))};
-  }
-
-  // Pieces in the engine's order; a piece continues the previous stroke only when it starts exactly where
-  // that stroke ends on the snap grid (no reversal, no reordering: that is pen planning's job).
-  std::vector<Polyline> build_strokes(bool hidden) const {
-    std::vector<Polyline> strokes;
-    for (const VisibleSegment& s : f_.segments) {
-      if (s.hidden != hidden) continue;
-      const Point2 a = page_point(s.s0), b = page_point(s.s1);
-      if (a == b) continue;  // nothing to draw at this resolution
-      if (!strokes.empty() && strokes.back().back() == a)
-        strokes.back().push_back(b);
-      else
-        strokes.push_back({a, b});
-    }
-    return strokes;
-  }
-
-  Json strokes_json(const std::vector<Polyline>& strokes) const {
+  Json strokes_json(StrokeLayer layer) const {
     Json out = Json::array();
-    for (const Polyline& line : strokes) {
+    for (const PlotStroke& stroke : f_.plot.page.strokes) {
+      if (stroke.layer != layer) continue;
       Json j = Json::array();
-      for (const Point2 p : line) j.push_back(Json::array({p.x, p.y}));
+      for (const Point2 p : stroke.points) j.push_back(point(p, "stroke point"));
       out.push_back(std::move(j));
     }
     return out;
   }
 
-  Json stats(const std::vector<Polyline>& strokes, std::size_t visible) const {
-    double down = 0, up = 0;
-    Point2 pen{0, 0};  // the page origin
-    for (const Polyline& line : strokes) {
-      up += distance(pen, line.front());
-      down += polyline_length(line);
-      pen = line.back();
-    }
-    if (!strokes.empty()) up += distance(pen, Point2{0, 0});
+  Json pens_json(StrokeLayer layer) const {
+    Json out = Json::array();
+    for (const PlotStroke& stroke : f_.plot.page.strokes)
+      if (stroke.layer == layer) out.push_back(stroke.pen);
+    return out;
+  }
+
+  Json stats(std::size_t visible) const {
+    const PlanStats& s = f_.plot.stats;
     Json j;
     j["segments"] = visible;
-    j["pen_down_mm"] = number(down, "pen-down length");
-    j["pen_up_mm"] = number(up, "pen-up travel");
-    j["lifts"] = strokes.size();
+    j["pen_down_mm"] = number(s.pen_down_mm, "pen-down length");
+    j["pen_up_mm"] = number(s.pen_up_mm, "pen-up travel");
+    j["pen_up_mean_mm"] = number(s.pen_up_mean_mm, "pen-up mean");
+    j["pen_up_median_mm"] = number(s.pen_up_median_mm, "pen-up median");
+    j["lifts"] = s.lifts;
+    j["lift_lower_bound"] = s.lift_lower_bound;
+    j["plot_seconds"] = number(s.plot_seconds, "plotting time");
+    j["pen_order"] = o_.pen_order;
     return j;
   }
 
   const JsonFrame& f_;
   const JsonOptions& o_;
   std::string where_;
-  PageLayout layout_;
+  const PageLayout& layout_;
 };
 
 // Nesting depth: a scalar is 0, a container one more than its deepest member.
@@ -217,18 +191,22 @@ void write_pretty(const Json& v, int indent, std::string& out) {
 }  // namespace
 
 std::string to_json_text(const std::vector<JsonFrame>& frames, const JsonOptions& options) {
-  const PageSpec spec{options.paper, options.margin_mm};
-  check_page_spec(spec);
   Json doc;
   doc["format"] = kJsonLinesFormat;
   if (!options.title.empty()) doc["title"] = options.title;
-  doc["page"] = {{"width_mm", options.paper.width_mm},
-                 {"height_mm", options.paper.height_mm},
-                 {"margin_mm", options.margin_mm},
+  // Every frame of one file shares the page (the runtime groups frames by file and paper); without a
+  // frame the default page is reported.
+  const PlotPage default_page;
+  const PlotPage& page = frames.empty() ? default_page : frames.front().plot.page;
+  // A non-finite or roomless page would print as null or describe no drawable area.
+  check_page_spec({{page.width_mm, page.height_mm}, page.margin_mm});
+  doc["page"] = {{"width_mm", page.width_mm},
+                 {"height_mm", page.height_mm},
+                 {"margin_mm", page.margin_mm},
                  {"origin", "top-left"},
                  {"y", "down"}};
   Json list = Json::array();
-  for (const JsonFrame& f : frames) list.push_back(FrameWriter(f, options, spec).build());
+  for (const JsonFrame& f : frames) list.push_back(FrameWriter(f, options).build());
   doc["frames"] = std::move(list);
   std::string text;
   try {

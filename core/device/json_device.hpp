@@ -12,25 +12,31 @@
 //                "segments": [{"p": [[x,y,z],[x,y,z]], "s": [[u,v],[u,v]], "object": "name",
 //                              "edge": i | "other": "name", "hidden": false}],
 //                "strokes": [[[x_mm,y_mm], ...], ...],
-//                "hidden_strokes": [...] (only with include_hidden),
-//                "stats": {"segments": n, "pen_down_mm": d, "pen_up_mm": u, "lifts": k}}]}
+//                "stroke_pens": [1, ...] (the pen of each stroke),
+//                "hidden_strokes": [...], "hidden_stroke_pens": [...] (only with include_hidden),
+//                "stats": {"segments": n, "pen_down_mm": d, "pen_up_mm": u, "pen_up_mean_mm": m,
+//                          "pen_up_median_mm": md, "lifts": k, "lift_lower_bound": b,
+//                          "plot_seconds": t, "pen_order": "optimized"}}]}
 //
-// Page coordinates: millimetres from the page's top-left corner, y down (as PDF and SVG, and the same
-// numbers the PDF device draws at): page = origin_mm + mm_per_unit·(u, −v) for picture (u, v). The fit
-// (core/device/page_layout.hpp) uses the camera frame, else every piece given, hidden or not, exactly
-// as write_pdf does, so one frame lands at the same millimetres in both.
+// Page coordinates: millimetres from the page's top-left corner, y down (as PDF and SVG). Each frame
+// carries its PagePlot (core/device/page_plot.hpp), which every device draws: "layout" is the fit its
+// strokes were mapped with (the camera frame, else every piece given, hidden or not; see
+// core/device/page_layout.hpp), page = origin_mm + mm_per_unit·(u, −v) for picture (u, v). "page" is
+// the first frame's PlotPage size and margin (the frames of one file share their page).
 // camera: `eye` is the world point at the view origin — the eye for perspective, for orthographic a
 // point on the view axis; `direction` is the unit world vector of increasing view depth (away from the
 // eye). view_from_world maps world to (right, up, depth) as view = m·p + t; picture = focal·(right,
 // up)/depth + offset (perspective) or focal·(right, up) + offset (orthographic).
 // segments: pieces from an edge carry its index in the object's edge list; intersection lines carry
 // the other object's name instead. Hidden pieces appear only with include_hidden.
-// strokes: for now each visible piece is one stroke, in the engine's order, except that a piece whose
-// start equals the previous piece's end (both snapped to 1e-6 mm) continues that stroke; pieces that
-// snap to zero length are left out. Pen planning will reorder and join them. stats describe "strokes":
-// pen_down_mm their summed length, pen_up_mm the travel from the page origin (0, 0) to the first
-// stroke, between consecutive strokes and back to the origin, lifts the number of strokes; "segments"
-// counts the visible pieces.
+// strokes: the plot's visible-layer strokes (pen-planned by core/plan/pen_plan.hpp), in plotting order,
+// with stroke_pens the pen of each; hidden_strokes and hidden_stroke_pens the hidden layer's, likewise.
+// The device neither reorders nor joins them. The plan draws pen by pen, visible before hidden within a
+// pen, so on the plotter the two lists interleave when there are several pens. stats are the plan's
+// (PlanStats), over every stroke it planned (both layers): pen_up_mm the travel from the home position
+// to the first stroke, between strokes and back; lifts the strokes drawn and lift_lower_bound the fewest
+// possible; plot_seconds the estimate from the plotter's speeds; pen_order is JsonOptions::pen_order as
+// given; "segments" counts the frame's visible pieces (JsonFrame::segments).
 // Numbers are finite (a non-finite input is a DeviceError) and printed by nlohmann::json, whose
 // shortest-representation output reads back to the identical double. The text is deterministic:
 // keys in schema order, no time stamps.
@@ -41,7 +47,7 @@
 #include <vector>
 
 #include "core/camera/camera.hpp"
-#include "core/device/page_layout.hpp"
+#include "core/device/page_plot.hpp"
 #include "core/hlr/visible_segment.hpp"
 
 namespace hlr {
@@ -54,18 +60,20 @@ struct JsonFrame {
   Camera camera;
   std::vector<VisibleSegment> segments;
   std::vector<std::string> object_names;  // indexed by VisibleSegment::object (and ::other)
+  PagePlot plot;                          // the frame laid out on its page and pen-planned
 };
 
 struct JsonOptions {
-  Paper paper;  // A4 landscape
-  double margin_mm = 12;
-  bool include_hidden = false;
-  std::string title;  // omitted when empty
+  bool include_hidden = false;          // list hidden segments and hidden_strokes
+  std::string pen_order = "optimized";  // reported in stats
+  std::string title;                    // omitted when empty
   // true: indented, one segment or stroke per line; false: a single line without spaces.
   bool pretty = true;
 };
 
-// Throws DeviceError for a non-finite number, an object index without a name, or a bad paper/margin.
+// Throws DeviceError for a non-finite number (camera, segments, layout, strokes, stats), an object index
+// without a name, a first-frame page that is not finite or leaves no room inside its margins
+// (check_page_spec), or a name or title that is not valid UTF-8.
 std::string to_json_text(const std::vector<JsonFrame>& frames, const JsonOptions& options);
 
 // Atomic (core/device/atomic_file.hpp): on any error nothing is left at `target`, and DeviceError names it.

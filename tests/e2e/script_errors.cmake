@@ -24,7 +24,7 @@ expect_failure(65 "broken.hls:4:28: error: bad argument 'sides' to cylinder\\(\\
 expect_failure(65 "lib/broken_part.hls:1:17: error: cannot apply '/' to a string and a number"
                ${SCRIPTS}/broken_include.hls -o ${WORK}/out.pdf)
 expect_failure(66 "cannot read" ${SCRIPTS}/does-not-exist.hls -o ${WORK}/out.pdf)
-expect_failure(64 "supported: pdf, json" ${SCRIPTS}/posts.hls -o ${WORK}/out.svgz)
+expect_failure(64 "supported: pdf, svg, png, hpgl" ${SCRIPTS}/posts.hls -o ${WORK}/out.svgz)
 expect_failure(64 "unrecognised option|unrecognized option" ${SCRIPTS}/posts.hls --colour red)
 expect_failure(73 "does not exist" ${SCRIPTS}/posts.hls -o ${WORK}/no-such-dir/out.pdf)
 

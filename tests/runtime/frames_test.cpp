@@ -168,14 +168,35 @@ TEST(Frames, OutputNamesGroupFramesIntoFiles) {
     FAIL();
   } catch (const RunError& e) {
     EXPECT_EQ(e.exit_code, 64);
-    EXPECT_NE(std::string(e.what()).find("supported: pdf, json"), std::string::npos);
+    EXPECT_NE(std::string(e.what()).find("supported: pdf, svg, png, hpgl (or .plt), json"),
+              std::string::npos);
   }
-  s.name = "mine.png";
+  s.name = "mine.gif";
   try {
     plan_outputs(std::nullopt, {{0, s}}, *program);
     FAIL();
   } catch (const EvalError& e) {
-    EXPECT_NE(e.diagnostics.front().message.find("unknown output type '.png'"), std::string::npos);
+    EXPECT_NE(e.diagnostics.front().message.find("unknown output type '.gif'"), std::string::npos);
+  }
+  // SVG, PNG and HPGL hold one frame: several frames sharing such a name ask for {frame} in it.
+  for (const char* name : {"all.svg", "all.png", "all.hpgl"}) {
+    try {
+      plan_outputs(std::string(name), three, *program);
+      FAIL() << name;
+    } catch (const RunError& e) {
+      EXPECT_EQ(e.exit_code, 64);
+      EXPECT_NE(std::string(e.what()).find("would hold several frames"), std::string::npos) << e.what();
+      EXPECT_NE(e.hint.find("{frame:03}"), std::string::npos) << e.hint;
+    }
+  }
+  EXPECT_EQ(plan_outputs(std::string("f{frame}.svg"), three, *program).size(), 3U);
+  EXPECT_EQ(plan_outputs(std::string("one.hpgl"), {three.front()}, *program).size(), 1U);
+  s.name = "same.plt";
+  try {
+    plan_outputs(std::nullopt, {{0, s}, {1, s}}, *program);
+    FAIL();
+  } catch (const EvalError& e) {
+    EXPECT_NE(e.diagnostics.front().message.find("one HPGL file holds one frame"), std::string::npos);
   }
 }
 

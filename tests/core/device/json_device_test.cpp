@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -11,12 +12,15 @@
 #include <numbers>
 #include <sstream>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "core/camera/desens_camera.hpp"
 #include "core/camera/lookat_camera.hpp"
 #include "core/camera/orbit_camera.hpp"
 #include "core/camera/ortho_camera.hpp"
 #include "core/device/atomic_file.hpp"
+#include "core/device/page_layout.hpp"
 
 namespace hlr {
 namespace {
@@ -37,7 +41,35 @@ VisibleSegment piece(const Camera& c, Point3 a, Point3 b, std::uint32_t object =
   return s;
 }
 
-// A unit cube's visible-looking pieces; the first two share an end point so they form one stroke.
+PlotStroke stroke(std::vector<Point2> points, int pen, StrokeLayer layer) {
+  return PlotStroke{std::move(points), pen, layer};
+}
+
+// A planned page made by hand (the planner is not under test): two pens, visible before hidden within a
+// pen as the plan orders them, so the layers interleave. Stroke 2 starts where stroke 0 ends: the device
+// must still keep them apart.
+PagePlot hand_plot(const PageLayout& layout) {
+  PagePlot p;
+  p.layout = layout;
+  p.page.strokes = {stroke({{20, 30}, {40, 30}, {40, 50}}, 2, StrokeLayer::Visible),
+                    stroke({{100, 100}, {120.5, 110.25}}, 2, StrokeLayer::Hidden),
+                    stroke({{40, 50}, {80, 70}}, 3, StrokeLayer::Visible),
+                    stroke({{10.5, 11.25}, {12, 13}, {14, 15}, {16, 17}}, 3, StrokeLayer::Hidden)};
+  p.stats.pieces = 7;
+  p.stats.merged_pieces = 6;
+  p.stats.pen_down_mm = 123.5;
+  p.stats.pen_up_mm = 456.25;
+  p.stats.pen_up_mean_mm = 91.25;
+  p.stats.pen_up_median_mm = 80.5;
+  p.stats.lifts = 4;
+  p.stats.lift_lower_bound = 3;
+  p.stats.plot_seconds = 2.75;
+  p.stats.planning_ms = 12;
+  p.visible_segments = 4;
+  return p;
+}
+
+// A unit cube's visible-looking pieces, laid out on the default page the way plot_page fits them.
 JsonFrame cube_frame(const Camera& camera) {
   JsonFrame f;
   f.frame = 3;
@@ -46,6 +78,7 @@ JsonFrame cube_frame(const Camera& camera) {
   f.object_names = {"cube", "wedge"};
   f.segments = {piece(camera, {1, 1, 1}, {-1, 1, 1}, 0, 4), piece(camera, {-1, 1, 1}, {-1, -1, 1}, 0, 5),
                 piece(camera, {1, -1, 1}, {1, -1, -1}, 1, 7), piece(camera, {1, 1, -1}, {1, 1, 1}, 0, 9)};
+  f.plot = hand_plot(fit_to_page(camera.frame, f.segments, PageSpec{}));
   return f;
 }
 
@@ -59,32 +92,16 @@ void expect_vec3(const json& j, double x, double y, double z, double tolerance =
   EXPECT_NEAR(j[2].get<double>(), z, tolerance);
 }
 
-// Page points computed independently of the device: the shared layout plus the 1e-6 mm grid.
-std::vector<std::vector<Point2>> expected_strokes(const JsonFrame& f, const JsonOptions& o, bool hidden) {
-  const PageLayout l = fit_to_page(f.camera.frame, f.segments, {o.paper, o.margin_mm});
-  std::vector<std::vector<Point2>> out;
-  for (const VisibleSegment& s : f.segments) {
-    if (s.hidden != hidden) continue;
-    const Point2 a = l.to_page_mm(s.s0), b = l.to_page_mm(s.s1);
-    if (!out.empty() && std::abs(out.back().back().x - a.x) < 1e-7 &&
-        std::abs(out.back().back().y - a.y) < 1e-7)
-      out.back().push_back(b);
-    else
-      out.push_back({a, b});
-  }
+std::vector<std::string> keys(const nlohmann::ordered_json& object) {
+  std::vector<std::string> out;
+  for (auto it = object.begin(); it != object.end(); ++it) out.push_back(it.key());
   return out;
 }
 
-void expect_strokes(const json& got, const std::vector<std::vector<Point2>>& want) {
-  ASSERT_EQ(got.size(), want.size());
-  for (std::size_t i = 0; i < want.size(); ++i) {
-    ASSERT_EQ(got[i].size(), want[i].size()) << "stroke " << i;
-    for (std::size_t k = 0; k < want[i].size(); ++k) {
-      EXPECT_NEAR(got[i][k][0].get<double>(), want[i][k].x, 5e-7) << i << "," << k;
-      EXPECT_NEAR(got[i][k][1].get<double>(), want[i][k].y, 5e-7) << i << "," << k;
-    }
-  }
-}
+// The hand plot's strokes as the schema spells them.
+const json kVisibleStrokes = {{{20.0, 30.0}, {40.0, 30.0}, {40.0, 50.0}}, {{40.0, 50.0}, {80.0, 70.0}}};
+const json kHiddenStrokes = {{{100.0, 100.0}, {120.5, 110.25}},
+                             {{10.5, 11.25}, {12.0, 13.0}, {14.0, 15.0}, {16.0, 17.0}}};
 
 TEST(JsonDevice, DocumentFieldsForALookatFrame) {
   const Camera camera = lookat_camera(kLookat);
@@ -124,10 +141,12 @@ TEST(JsonDevice, DocumentFieldsForALookatFrame) {
   const Vector3 t = camera.viewFromWorld.t;
   EXPECT_EQ(cam["view_from_world"]["t"], json::array({t.x, t.y, t.z}));
 
-  const PageLayout l = fit_to_page(std::nullopt, f.segments, {o.paper, o.margin_mm});
+  // No camera frame: the pieces' extent is fitted.
+  const PageLayout l = fit_to_page(std::nullopt, f.segments, PageSpec{});
   EXPECT_EQ(fr["layout"]["mm_per_unit"].get<double>(), l.scale);
-  EXPECT_NEAR(fr["layout"]["origin_mm"][0].get<double>(), l.origin().x, 1e-9);
-  EXPECT_NEAR(fr["layout"]["origin_mm"][1].get<double>(), l.origin().y, 1e-9);
+  const Point2 origin = l.to_page_mm({0, 0});
+  EXPECT_NEAR(fr["layout"]["origin_mm"][0].get<double>(), origin.x, 1e-9);
+  EXPECT_NEAR(fr["layout"]["origin_mm"][1].get<double>(), origin.y, 1e-9);
 
   const json& segs = fr["segments"];
   ASSERT_EQ(segs.size(), f.segments.size());
@@ -144,90 +163,117 @@ TEST(JsonDevice, DocumentFieldsForALookatFrame) {
     EXPECT_EQ(j.size(), 5u);
   }
 
-  // Segments 0 and 1 meet head to tail; 2 and 3 stand alone.
-  const auto want = expected_strokes(f, o, false);
-  ASSERT_EQ(want.size(), 3u);
-  expect_strokes(fr["strokes"], want);
+  // The plot's visible strokes in order, not joined although stroke 1 starts where stroke 0 ends.
+  EXPECT_EQ(fr["strokes"], kVisibleStrokes);
+  EXPECT_EQ(fr["stroke_pens"], json::array({2, 3}));
   EXPECT_FALSE(fr.contains("hidden_strokes"));
+  EXPECT_FALSE(fr.contains("hidden_stroke_pens"));
 
-  // Stats summed independently from the segments themselves.
-  double down = 0, up = 0;
-  Point2 pen{0, 0};
-  for (const auto& stroke : want) {
-    up += distance(pen, stroke.front());
-    for (std::size_t k = 1; k < stroke.size(); ++k) down += distance(stroke[k - 1], stroke[k]);
-    pen = stroke.back();
-  }
-  up += distance(pen, Point2{0, 0});
-  double down_from_segments = 0;
-  for (const VisibleSegment& s : f.segments) down_from_segments += l.scale * distance(s.s0, s.s1);
-  const json& st = fr["stats"];
-  EXPECT_EQ(st["segments"], 4);
-  EXPECT_NEAR(st["pen_down_mm"].get<double>(), down, 1e-5);
-  EXPECT_NEAR(st["pen_down_mm"].get<double>(), down_from_segments, 1e-5);
-  EXPECT_NEAR(st["pen_up_mm"].get<double>(), up, 1e-5);
-  EXPECT_EQ(st["lifts"], 3);
-  EXPECT_EQ(st.size(), 4u);
+  const json want_stats = {{"segments", 4},           {"pen_down_mm", 123.5},     {"pen_up_mm", 456.25},
+                           {"pen_up_mean_mm", 91.25}, {"pen_up_median_mm", 80.5}, {"lifts", 4},
+                           {"lift_lower_bound", 3},   {"plot_seconds", 2.75},     {"pen_order", "optimized"}};
+  EXPECT_EQ(fr["stats"], want_stats);
 }
 
-TEST(JsonDevice, StrokesFitTheCameraFrameAndTheMargins) {
+TEST(JsonDevice, LayoutOfTheCameraFrameMapsPictureToPage) {
   LookatParameters p = kLookat;
   p.aspect = 1.5;
   const Camera camera = lookat_camera(p);
-  const JsonFrame f = cube_frame(camera);
-  const JsonOptions o;
-  const json fr = parse(to_json_text({f}, o))["frames"][0];
+  JsonFrame f = cube_frame(camera);
+  // What plot_page would draw: every piece mapped through the frame's layout.
+  const PageLayout layout = fit_to_page(camera.frame, f.segments, PageSpec{});
+  f.plot.page.strokes.clear();
+  for (const VisibleSegment& s : f.segments)
+    f.plot.page.strokes.push_back(
+        stroke({layout.to_page_mm(s.s0), layout.to_page_mm(s.s1)}, 1, StrokeLayer::Visible));
+  const json fr = parse(to_json_text({f}, {}))["frames"][0];
   EXPECT_EQ(fr["camera"]["frame"], json::array({-1.5, -1.0, 1.5, 1.0}));
-  // Frame 3 × 2 on room 273 × 186: scale min(91, 93) = 91.
-  EXPECT_DOUBLE_EQ(fr["layout"]["mm_per_unit"].get<double>(), 91);
-  EXPECT_NEAR(fr["layout"]["origin_mm"][0].get<double>(), 148.5, 1e-12);
-  EXPECT_NEAR(fr["layout"]["origin_mm"][1].get<double>(), 105, 1e-12);
-  expect_strokes(fr["strokes"], expected_strokes(f, o, false));
-  for (const json& stroke : fr["strokes"])
-    for (const json& pt : stroke) {
-      EXPECT_GE(pt[0].get<double>(), 12);
-      EXPECT_LE(pt[0].get<double>(), 285);
-      EXPECT_GE(pt[1].get<double>(), 12);
-      EXPECT_LE(pt[1].get<double>(), 198);
+  // Frame 3 × 2 on room 273 × 186: scale min(91, 93) = 91, picture (0, 0) at the page centre.
+  const double s = fr["layout"]["mm_per_unit"].get<double>();
+  const double x0 = fr["layout"]["origin_mm"][0].get<double>(),
+               y0 = fr["layout"]["origin_mm"][1].get<double>();
+  EXPECT_DOUBLE_EQ(s, 91);
+  EXPECT_NEAR(x0, 148.5, 1e-12);
+  EXPECT_NEAR(y0, 105, 1e-12);
+  // The documented mapping, page = origin_mm + mm_per_unit·(u, −v), reproduces every stroke point.
+  const json& strokes = fr["strokes"];
+  ASSERT_EQ(strokes.size(), f.segments.size());
+  for (std::size_t i = 0; i < f.segments.size(); ++i) {
+    const Point2 ends[2] = {f.segments[i].s0, f.segments[i].s1};
+    ASSERT_EQ(strokes[i].size(), 2u);
+    for (int k = 0; k < 2; ++k) {
+      const double x = strokes[i][k][0].get<double>(), y = strokes[i][k][1].get<double>();
+      EXPECT_NEAR(x, x0 + s * ends[k].x, 1e-9) << i << "," << k;
+      EXPECT_NEAR(y, y0 - s * ends[k].y, 1e-9) << i << "," << k;
+      EXPECT_GE(x, 12);
+      EXPECT_LE(x, 285);
+      EXPECT_GE(y, 12);
+      EXPECT_LE(y, 198);
     }
+  }
+  EXPECT_EQ(fr["stroke_pens"], json::array({1, 1, 1, 1}));
 }
 
-// Only an end meeting the next start joins: reversed or non-consecutive matches stay separate strokes.
-TEST(JsonDevice, JoinsOnlyHeadToTailConsecutivePieces) {
-  const Camera camera = ortho_camera({.eye = {0, 0, 10}, .target = {0, 0, 0}, .up = {0, 1, 0}, .height = 2});
-  JsonFrame f;
-  f.camera = camera;
-  f.object_names = {"a"};
-  f.segments = {piece(camera, {0, 0, 0}, {1, 0, 0}),  piece(camera, {1, 0, 0}, {1, 1, 0}),
-                piece(camera, {0, 1, 0}, {1, 1, 0}),     // ends where the last one ended: reversed, no join
-                piece(camera, {5, 5, 0}, {6, 5, 0}),     // elsewhere
-                piece(camera, {0, 0, 0}, {-1, 0, 0}),    // starts where stroke 0 started: not consecutive
-                piece(camera, {-1, 0, 0}, {-1, 0, 0})};  // zero length: left out
-  const JsonOptions o;
+TEST(JsonDevice, LayoutIsThePlotsNotRecomputed) {
+  JsonFrame f = cube_frame(lookat_camera(kLookat));
+  f.plot.layout.scale = 2.5;
+  f.plot.layout.picture_centre = {1, -2};
+  const json fr = parse(to_json_text({f}, {}))["frames"][0];
+  EXPECT_EQ(fr["layout"]["mm_per_unit"], 2.5);
+  // Picture (0, 0) is (−1, +2) from the centre (148.5, 105): x 148.5 − 2.5, y 105 − 2.5·2 (y down).
+  EXPECT_EQ(fr["layout"]["origin_mm"], json::array({146.0, 100.0}));
+}
+
+TEST(JsonDevice, StrokesAndPensByLayerInPlottingOrder) {
+  const JsonFrame f = cube_frame(lookat_camera(kLookat));
+  JsonOptions o;
+  const json off = parse(to_json_text({f}, o))["frames"][0];
+  EXPECT_EQ(off["strokes"], kVisibleStrokes);
+  EXPECT_EQ(off["stroke_pens"], json::array({2, 3}));
+  EXPECT_FALSE(off.contains("hidden_strokes"));
+  EXPECT_FALSE(off.contains("hidden_stroke_pens"));
+
+  o.include_hidden = true;
+  const json on = parse(to_json_text({f}, o))["frames"][0];
+  EXPECT_EQ(on["strokes"], kVisibleStrokes);
+  EXPECT_EQ(on["stroke_pens"], json::array({2, 3}));
+  EXPECT_EQ(on["hidden_strokes"], kHiddenStrokes);
+  EXPECT_EQ(on["hidden_stroke_pens"], json::array({2, 3}));
+  EXPECT_EQ(on["stats"], off["stats"]);  // the plan's numbers, whatever is listed
+
+  // Reversed plotting order and other pens come through as given.
+  JsonFrame g = f;
+  std::reverse(g.plot.page.strokes.begin(), g.plot.page.strokes.end());
+  g.plot.page.strokes[0].pen = 7;
+  const json rev = parse(to_json_text({g}, o))["frames"][0];
+  EXPECT_EQ(rev["strokes"], json::array({kVisibleStrokes[1], kVisibleStrokes[0]}));
+  EXPECT_EQ(rev["stroke_pens"], json::array({3, 2}));
+  EXPECT_EQ(rev["hidden_strokes"], json::array({kHiddenStrokes[1], kHiddenStrokes[0]}));
+  EXPECT_EQ(rev["hidden_stroke_pens"], json::array({7, 2}));
+}
+
+TEST(JsonDevice, OnlyHiddenStrokes) {
+  JsonFrame f = cube_frame(lookat_camera(kLookat));
+  for (PlotStroke& s : f.plot.page.strokes) s.layer = StrokeLayer::Hidden;
+  JsonOptions o;
+  o.include_hidden = true;
   const json fr = parse(to_json_text({f}, o))["frames"][0];
-  const json& strokes = fr["strokes"];
-  ASSERT_EQ(strokes.size(), 4u);
-  EXPECT_EQ(strokes[0].size(), 3u);
-  EXPECT_EQ(strokes[1].size(), 2u);
-  EXPECT_EQ(strokes[2].size(), 2u);
-  EXPECT_EQ(strokes[3].size(), 2u);
-  EXPECT_EQ(fr["stats"]["segments"], 6);
-  EXPECT_EQ(fr["stats"]["lifts"], 4);
-  EXPECT_EQ(fr["segments"].size(), 6u);
-  // The frame-less extent is x ∈ [−1, 6], y ∈ [0, 5]: scale min(273/7, 186/5) = 37.2.
-  EXPECT_DOUBLE_EQ(fr["layout"]["mm_per_unit"].get<double>(), 37.2);
-  const double s = 37.2;
-  const double x0 = 148.5 - 2.5 * s, y0 = 105 + 2.5 * s;  // picture (0, 0)
-  EXPECT_NEAR(strokes[0][0][0].get<double>(), x0, 1e-6);
-  EXPECT_NEAR(strokes[0][0][1].get<double>(), y0, 1e-6);
-  EXPECT_NEAR(strokes[0][2][0].get<double>(), x0 + s, 1e-6);
-  EXPECT_NEAR(strokes[0][2][1].get<double>(), y0 - s, 1e-6);  // picture up is page up
-  // Pen-down: 1 + 1 + 1 + 1 + 1 units; pen-up: origin → (0,0), (1,1) → (0,1), (1,1) → (5,5),
-  // (6,5) → (0,0), (−1,0) → page origin.
-  EXPECT_NEAR(fr["stats"]["pen_down_mm"].get<double>(), 5 * s, 1e-5);
-  const double up =
-      std::hypot(x0, y0) + s + s * std::hypot(4, 4) + s * std::hypot(6, 5) + std::hypot(x0 - s, y0);
-  EXPECT_NEAR(fr["stats"]["pen_up_mm"].get<double>(), up, 1e-5);
+  EXPECT_EQ(fr["strokes"], json::array());
+  EXPECT_EQ(fr["stroke_pens"], json::array());
+  ASSERT_EQ(fr["hidden_strokes"].size(), 4u);
+  EXPECT_EQ(fr["hidden_strokes"][0], kVisibleStrokes[0]);
+  EXPECT_EQ(fr["hidden_strokes"][1], kHiddenStrokes[0]);
+  EXPECT_EQ(fr["hidden_stroke_pens"], json::array({2, 2, 3, 3}));
+}
+
+TEST(JsonDevice, PenOrderIsReportedAsGiven) {
+  JsonOptions o;
+  o.pen_order = "greedy";
+  const json st = parse(to_json_text({cube_frame(lookat_camera(kLookat))}, o))["frames"][0]["stats"];
+  EXPECT_EQ(st["pen_order"], "greedy");
+  o.pen_order = "none";
+  EXPECT_EQ(parse(to_json_text({cube_frame(lookat_camera(kLookat))}, o))["frames"][0]["stats"]["pen_order"],
+            "none");
 }
 
 TEST(JsonDevice, OrthographicCamera) {
@@ -284,25 +330,22 @@ TEST(JsonDevice, HiddenPiecesOnlyWhenAsked) {
   JsonFrame f = cube_frame(camera);
   VisibleSegment h = piece(camera, {-1, -1, -1}, {1, -1, -1}, 1, 2);
   h.hidden = true;
-  f.segments.insert(f.segments.begin() + 1, h);  // between the two joinable visible pieces
+  f.segments.insert(f.segments.begin() + 1, h);
 
   JsonOptions o;
   const json off = parse(to_json_text({f}, o))["frames"][0];
-  EXPECT_EQ(off["segments"].size(), 4u);
+  ASSERT_EQ(off["segments"].size(), 4u);
   for (const json& s : off["segments"]) EXPECT_EQ(s["hidden"], false);
-  EXPECT_FALSE(off.contains("hidden_strokes"));
+  EXPECT_EQ(off["segments"][1]["edge"], 5);  // the visible piece that followed the hidden one
   EXPECT_EQ(off["stats"]["segments"], 4);
-  EXPECT_EQ(off["strokes"].size(), 3u);  // the hidden piece does not break the visible stroke
 
   o.include_hidden = true;
   const json on = parse(to_json_text({f}, o))["frames"][0];
   ASSERT_EQ(on["segments"].size(), 5u);
   EXPECT_EQ(on["segments"][1]["hidden"], true);
   EXPECT_EQ(on["segments"][1]["object"], "wedge");
-  EXPECT_EQ(on["stats"]["segments"], 4);  // stats describe the visible strokes
-  EXPECT_EQ(on["strokes"], off["strokes"]);
-  expect_strokes(on["hidden_strokes"], expected_strokes(f, o, true));
-  EXPECT_EQ(on["hidden_strokes"].size(), 1u);
+  EXPECT_EQ(on["segments"][1]["edge"], 2);
+  EXPECT_EQ(on["stats"]["segments"], 4);  // visible pieces only
 }
 
 TEST(JsonDevice, IntersectionPiecesNameTheOtherObject) {
@@ -329,6 +372,12 @@ TEST(JsonDevice, NumbersRoundTripExactly) {
   s.s0 = {2.0 / 3.0, -0.7};
   s.s1 = {std::numeric_limits<double>::max() / 1e300, 0.1};
   f.segments = {s};
+  f.plot.layout.scale = 1.0 / 7.0;
+  f.plot.page.strokes = {
+      stroke({{0.1 + 0.2, 2.0 / 3.0}, {std::nextafter(100.0, 0.0), 1e-7}}, 1, StrokeLayer::Visible)};
+  f.plot.stats.pen_down_mm = 1.0 / 3.0;
+  f.plot.stats.pen_up_median_mm = std::nextafter(5.0, 6.0);
+  f.plot.stats.plot_seconds = 0.1 + 0.7;
   const json fr = parse(to_json_text({f}, {}))["frames"][0];
   EXPECT_EQ(fr["time"].get<double>(), 1.0 / 3.0);
   const json& p = fr["segments"][0]["p"];
@@ -341,6 +390,27 @@ TEST(JsonDevice, NumbersRoundTripExactly) {
   EXPECT_EQ(fr["segments"][0]["s"][0][0].get<double>(), 2.0 / 3.0);
   EXPECT_EQ(fr["segments"][0]["s"][1][0].get<double>(), s.s1.x);
   EXPECT_EQ(fr["camera"]["focal"].get<double>(), camera.focal);
+  EXPECT_EQ(fr["layout"]["mm_per_unit"].get<double>(), 1.0 / 7.0);
+  const json& pts = fr["strokes"][0];
+  EXPECT_EQ(pts[0][0].get<double>(), 0.1 + 0.2);
+  EXPECT_EQ(pts[0][1].get<double>(), 2.0 / 3.0);
+  EXPECT_EQ(pts[1][0].get<double>(), std::nextafter(100.0, 0.0));
+  EXPECT_EQ(pts[1][1].get<double>(), 1e-7);
+  EXPECT_EQ(fr["stats"]["pen_down_mm"].get<double>(), 1.0 / 3.0);
+  EXPECT_EQ(fr["stats"]["pen_up_median_mm"].get<double>(), std::nextafter(5.0, 6.0));
+  EXPECT_EQ(fr["stats"]["plot_seconds"].get<double>(), 0.1 + 0.7);
+}
+
+// The error names the frame and the offending field.
+void expect_error_mentions(const std::vector<JsonFrame>& frames, const JsonOptions& o,
+                           const std::string& what) {
+  try {
+    to_json_text(frames, o);
+    ADD_FAILURE() << "no error for " << what;
+  } catch (const DeviceError& e) {
+    EXPECT_NE(std::string(e.what()).find("frame 3"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find(what), std::string::npos) << e.what();
+  }
 }
 
 TEST(JsonDevice, NonFiniteNumbersAndMissingNamesAreErrors) {
@@ -359,19 +429,12 @@ TEST(JsonDevice, NonFiniteNumbersAndMissingNamesAreErrors) {
   {
     JsonFrame f = cube_frame(camera);
     f.time = inf;
-    try {
-      to_json_text({f}, {});
-      ADD_FAILURE() << "no error";
-    } catch (const DeviceError& e) {
-      EXPECT_NE(std::string(e.what()).find("frame 3"), std::string::npos) << e.what();
-      EXPECT_NE(std::string(e.what()).find("time"), std::string::npos) << e.what();
-    }
+    expect_error_mentions({f}, {}, "time");
   }
   {
-    JsonFrame f = cube_frame(camera);  // a hidden NaN piece is still checked only when it is written
+    JsonFrame f = cube_frame(camera);  // a hidden NaN piece is checked when it is written
     f.segments[0].hidden = true;
     f.segments[0].p0.x = nan;
-    f.segments[0].s0.x = 0;
     JsonOptions o;
     o.include_hidden = true;
     EXPECT_THROW(to_json_text({f}, o), DeviceError);
@@ -379,12 +442,116 @@ TEST(JsonDevice, NonFiniteNumbersAndMissingNamesAreErrors) {
   {
     JsonFrame f = cube_frame(camera);
     f.object_names = {"cube"};  // segment 2 names object 1
+    expect_error_mentions({f}, {}, "object 1");
+  }
+  {
+    JsonFrame f = cube_frame(camera);
+    f.segments[0].source = SegmentSource::Intersection;
+    f.segments[0].other = 2;  // only two names
+    expect_error_mentions({f}, {}, "object 2");
+  }
+}
+
+TEST(JsonDevice, NonFiniteLayoutStrokesAndStatsAreErrors) {
+  const Camera camera = lookat_camera(kLookat);
+  const double nan = std::numeric_limits<double>::quiet_NaN(), inf = std::numeric_limits<double>::infinity();
+  {
+    JsonFrame f = cube_frame(camera);
+    f.plot.layout.scale = inf;
+    expect_error_mentions({f}, {}, "layout");
+  }
+  {
+    JsonFrame f = cube_frame(camera);
+    f.plot.layout.picture_centre.y = nan;
+    expect_error_mentions({f}, {}, "layout");
+  }
+  {
+    JsonFrame f = cube_frame(camera);
+    f.plot.page.strokes[2].points[1].y = nan;  // the second visible stroke
+    expect_error_mentions({f}, {}, "stroke");
+  }
+  {
+    JsonFrame f = cube_frame(camera);
+    f.plot.page.strokes[3].points[0].x = -inf;  // a hidden stroke: checked when it is written
+    JsonOptions o;
+    EXPECT_EQ(parse(to_json_text({f}, o))["frames"][0]["strokes"], kVisibleStrokes);
+    o.include_hidden = true;
+    expect_error_mentions({f}, o, "stroke");
+  }
+  double PlanStats::*const fields[] = {&PlanStats::pen_down_mm, &PlanStats::pen_up_mm,
+                                       &PlanStats::pen_up_mean_mm, &PlanStats::pen_up_median_mm,
+                                       &PlanStats::plot_seconds};
+  for (double PlanStats::*field : fields)
+    for (const double bad : {nan, inf, -inf}) {
+      JsonFrame f = cube_frame(camera);
+      f.plot.stats.*field = bad;
+      EXPECT_THROW(to_json_text({f}, {}), DeviceError);
+    }
+}
+
+TEST(JsonDevice, PageComesFromTheFirstFrame) {
+  const Camera camera = desens_camera({});
+  std::vector<JsonFrame> frames{cube_frame(camera), cube_frame(camera)};
+  const PageSpec letter{*paper_by_name("letter"), 20};
+  frames[0].plot.page.width_mm = letter.paper.width_mm;
+  frames[0].plot.page.height_mm = letter.paper.height_mm;
+  frames[0].plot.page.margin_mm = letter.margin_mm;
+  frames[0].plot.layout = fit_to_page(camera.frame, frames[0].segments, letter);
+  frames[1].frame = 4;
+  const json doc = parse(to_json_text(frames, {}));
+  EXPECT_EQ(doc["page"]["width_mm"], 215.9);
+  EXPECT_EQ(doc["page"]["height_mm"], 279.4);
+  EXPECT_EQ(doc["page"]["margin_mm"], 20.0);
+  // Frame [−1, 1]² on room 175.9 × 239.4: the width limits; each frame keeps its own plot's layout.
+  EXPECT_DOUBLE_EQ(doc["frames"][0]["layout"]["mm_per_unit"].get<double>(), 175.9 / 2);
+  EXPECT_NEAR(doc["frames"][0]["layout"]["origin_mm"][0].get<double>(), 215.9 / 2, 1e-12);
+  EXPECT_NEAR(doc["frames"][0]["layout"]["origin_mm"][1].get<double>(), 279.4 / 2, 1e-12);
+  EXPECT_DOUBLE_EQ(doc["frames"][1]["layout"]["mm_per_unit"].get<double>(), 93);  // 186 / 2 on A4
+
+  const json swapped = parse(to_json_text({frames[1], frames[0]}, {}));
+  EXPECT_EQ(swapped["page"]["width_mm"], 297.0);
+  EXPECT_EQ(swapped["page"]["height_mm"], 210.0);
+  EXPECT_EQ(swapped["page"]["margin_mm"], 12.0);
+}
+
+TEST(JsonDevice, UnusablePageIsAnError) {
+  const Camera camera = lookat_camera(kLookat);
+  {
+    JsonFrame f = cube_frame(camera);
+    f.plot.page.margin_mm = 200;  // more than half of 210
     EXPECT_THROW(to_json_text({f}, {}), DeviceError);
   }
   {
+    JsonFrame f = cube_frame(camera);
+    f.plot.page.width_mm = std::numeric_limits<double>::quiet_NaN();
+    EXPECT_THROW(to_json_text({f}, {}), DeviceError);
+  }
+  {
+    JsonFrame f = cube_frame(camera);
+    f.plot.page.height_mm = std::numeric_limits<double>::infinity();
+    EXPECT_THROW(to_json_text({f}, {}), DeviceError);
+  }
+}
+
+TEST(JsonDevice, InvalidUtf8IsAnError) {
+  const Camera camera = lookat_camera(kLookat);
+  {
+    JsonFrame f = cube_frame(camera);
+    f.object_names[1] = "wedge\xff";
+    EXPECT_THROW(to_json_text({f}, {}), DeviceError);
+    JsonOptions compact;
+    compact.pretty = false;
+    EXPECT_THROW(to_json_text({f}, compact), DeviceError);
+  }
+  {
     JsonOptions o;
-    o.margin_mm = 200;
+    o.title = "bad \xc3(";  // a lead byte without its continuation
     EXPECT_THROW(to_json_text({cube_frame(camera)}, o), DeviceError);
+  }
+  {
+    JsonFrame f = cube_frame(camera);
+    f.object_names[0] = "W\xc3\xbcrfel";  // valid UTF-8 passes through unchanged
+    EXPECT_EQ(parse(to_json_text({f}, {}))["frames"][0]["segments"][0]["object"], "W\xc3\xbcrfel");
   }
 }
 
@@ -404,12 +571,14 @@ TEST(JsonDevice, DeterministicPrettyAndCompact) {
   EXPECT_EQ(compact.find('\n'), compact.size() - 1);
   EXPECT_EQ(compact.find(' '), std::string::npos);
   EXPECT_EQ(pretty.back(), '\n');
-  // Schema order, and one segment per line in the pretty form.
+  // Schema order, one segment and one stroke per line in the pretty form.
   EXPECT_EQ(pretty.rfind("{\n  \"format\": \"hlrscript.lines/1\",\n", 0), 0u) << pretty.substr(0, 80);
   EXPECT_NE(pretty.find("\n        {\"p\":[["), std::string::npos) << pretty;
-  EXPECT_LT(pretty.find("\"camera\""), pretty.find("\"segments\""));
-  EXPECT_LT(pretty.find("\"segments\""), pretty.find("\"strokes\""));
-  EXPECT_LT(pretty.find("\"strokes\""), pretty.find("\"stats\""));
+  EXPECT_NE(
+      pretty.find("\n        [[20.0,30.0],[40.0,30.0],[40.0,50.0]],\n        [[40.0,50.0],[80.0,70.0]]\n"),
+      std::string::npos)
+      << pretty;
+  EXPECT_NE(pretty.find("\"stroke_pens\": [2,3],\n"), std::string::npos) << pretty;
   EXPECT_FALSE(parse(pretty).contains("title"));
   const json doc = parse(pretty);
   ASSERT_EQ(doc["frames"].size(), 2u);
@@ -417,30 +586,57 @@ TEST(JsonDevice, DeterministicPrettyAndCompact) {
   EXPECT_EQ(doc["frames"][1]["time"], 0.5);
 }
 
+TEST(JsonDevice, KeysInSchemaOrder) {
+  JsonOptions o;
+  o.title = "t";
+  o.include_hidden = true;
+  for (const bool pretty : {true, false}) {
+    o.pretty = pretty;
+    const auto doc = nlohmann::ordered_json::parse(to_json_text({cube_frame(lookat_camera(kLookat))}, o));
+    using V = std::vector<std::string>;
+    EXPECT_EQ(keys(doc), (V{"format", "title", "page", "frames"}));
+    EXPECT_EQ(keys(doc["page"]), (V{"width_mm", "height_mm", "margin_mm", "origin", "y"}));
+    const auto& fr = doc["frames"][0];
+    EXPECT_EQ(keys(fr), (V{"frame", "time", "camera", "layout", "segments", "strokes", "stroke_pens",
+                           "hidden_strokes", "hidden_stroke_pens", "stats"}));
+    EXPECT_EQ(keys(fr["camera"]), (V{"kind", "constructor", "eye", "direction", "focal", "offset",
+                                     "near_depth", "view_from_world"}));
+    EXPECT_EQ(keys(fr["layout"]), (V{"mm_per_unit", "origin_mm"}));
+    EXPECT_EQ(keys(fr["segments"][0]), (V{"p", "s", "object", "edge", "hidden"}));
+    EXPECT_EQ(keys(fr["stats"]),
+              (V{"segments", "pen_down_mm", "pen_up_mm", "pen_up_mean_mm", "pen_up_median_mm", "lifts",
+                 "lift_lower_bound", "plot_seconds", "pen_order"}));
+  }
+}
+
 TEST(JsonDevice, EmptyDocumentAndEmptyFrame) {
   const json none = parse(to_json_text({}, {}));
   EXPECT_EQ(none["format"], "hlrscript.lines/1");
+  EXPECT_EQ(none["page"]["width_mm"], 297.0);  // the default page
+  EXPECT_EQ(none["page"]["height_mm"], 210.0);
+  EXPECT_EQ(none["page"]["margin_mm"], 12.0);
   EXPECT_EQ(none["frames"], json::array());
 
   JsonFrame f;
   f.camera = lookat_camera(kLookat);
-  const json fr = parse(to_json_text({f}, {}))["frames"][0];
+  JsonOptions o;
+  o.include_hidden = true;
+  const json fr = parse(to_json_text({f}, o))["frames"][0];
   EXPECT_EQ(fr["segments"], json::array());
   EXPECT_EQ(fr["strokes"], json::array());
-  EXPECT_EQ(fr["stats"], (json{{"segments", 0}, {"pen_down_mm", 0.0}, {"pen_up_mm", 0.0}, {"lifts", 0}}));
-}
-
-TEST(JsonDevice, PaperAndMarginComeFromTheOptions) {
-  JsonOptions o;
-  o.paper = *paper_by_name("letter");
-  o.margin_mm = 20;
-  const Camera camera = desens_camera({});
-  const json doc = parse(to_json_text({cube_frame(camera)}, o));
-  EXPECT_EQ(doc["page"]["width_mm"], 215.9);
-  EXPECT_EQ(doc["page"]["height_mm"], 279.4);
-  EXPECT_EQ(doc["page"]["margin_mm"], 20.0);
-  // Frame [−1, 1]² on room 175.9 × 239.4: the width limits.
-  EXPECT_DOUBLE_EQ(doc["frames"][0]["layout"]["mm_per_unit"].get<double>(), 175.9 / 2);
+  EXPECT_EQ(fr["stroke_pens"], json::array());
+  EXPECT_EQ(fr["hidden_strokes"], json::array());
+  EXPECT_EQ(fr["hidden_stroke_pens"], json::array());
+  EXPECT_EQ(fr["layout"], (json{{"mm_per_unit", 1.0}, {"origin_mm", {148.5, 105.0}}}));
+  EXPECT_EQ(fr["stats"], (json{{"segments", 0},
+                               {"pen_down_mm", 0.0},
+                               {"pen_up_mm", 0.0},
+                               {"pen_up_mean_mm", 0.0},
+                               {"pen_up_median_mm", 0.0},
+                               {"lifts", 0},
+                               {"lift_lower_bound", 0},
+                               {"plot_seconds", 0.0},
+                               {"pen_order", "optimized"}}));
 }
 
 class JsonFile : public ::testing::Test {
@@ -487,7 +683,7 @@ TEST_F(JsonFile, BadFrameKeepsThePreviousFile) {
   const fs::path target = dir_ / "out.json";
   { std::ofstream(target) << "previous"; }
   JsonFrame f = cube_frame(lookat_camera(kLookat));
-  f.segments[0].p1.z = std::numeric_limits<double>::quiet_NaN();
+  f.plot.page.strokes[0].points[1].x = std::numeric_limits<double>::quiet_NaN();
   try {
     write_json(target, {f}, {});
     ADD_FAILURE() << "no error";
@@ -496,6 +692,19 @@ TEST_F(JsonFile, BadFrameKeepsThePreviousFile) {
   }
   EXPECT_EQ(slurp(target), "previous");
   EXPECT_EQ(std::distance(fs::directory_iterator(dir_), fs::directory_iterator{}), 1);
+}
+
+TEST_F(JsonFile, InvalidUtf8CreatesNoFile) {
+  const fs::path target = dir_ / "out.json";
+  JsonFrame f = cube_frame(lookat_camera(kLookat));
+  f.object_names[0] = "\xfe\xff";
+  try {
+    write_json(target, {f}, {});
+    ADD_FAILURE() << "no error";
+  } catch (const DeviceError& e) {
+    EXPECT_NE(std::string(e.what()).find(target.string()), std::string::npos) << e.what();
+  }
+  EXPECT_TRUE(fs::is_empty(dir_));
 }
 
 }  // namespace

@@ -1,0 +1,38 @@
+// One frame's visible set laid out on its page and pen-planned: the PlotPage every device draws, the
+// layout that put it there (for JSON readers mapping picture to page) and the plan's statistics.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/device/page_layout.hpp"
+#include "core/device/plot_page.hpp"
+#include "core/geometry/rect2.hpp"
+#include "core/hlr/visible_segment.hpp"
+#include "core/plan/pen_plan.hpp"
+
+namespace hlr {
+
+struct PagePlotOptions {
+  PageSpec spec;                  // paper, margins, explicit scale
+  std::vector<int> object_pens;   // by VisibleSegment::object; objects past the end use pen 1
+  std::optional<int> hidden_pen;  // pen of hidden pieces; unset: the object's pen
+  bool include_hidden = false;    // hidden pieces are planned (and drawn) only when on
+  PlanOptions plan;
+};
+
+struct PagePlot {
+  PlotPage page;
+  PageLayout layout;
+  PlanStats stats;
+  std::size_t visible_segments = 0;  // visible pieces given (before snapping and merging)
+};
+
+// Fits the drawing (the camera frame when there is one, else the pieces) to the page, maps every piece
+// to page millimetres and plans the strokes. Throws DeviceError for a bad page, a non-finite coordinate or
+// a pen outside 1..255.
+PagePlot plot_page(const std::vector<VisibleSegment>& segments, const std::optional<Rect2>& frame,
+                   std::string caption, const PagePlotOptions& options);
+
+}  // namespace hlr
