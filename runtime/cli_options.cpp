@@ -45,6 +45,7 @@ po::options_description visible_options() {
       ("plotter", po::value<std::string>()->value_name("NAME"),
        "HPGL plotter profile: generic (default), hp7475a, hp7440a, hp7550, roland-dxy, or one the script "
        "declares")                                                     //
+      ("plain", "no frame border or caption on PDF/SVG/PNG")           //
       ("clip", "clip HPGL to the plotter's range instead of failing")  //
       ("hpgl-moves", po::value<std::string>()->value_name("relative|absolute"),
        "HPGL moves (default: the profile's)")  //
@@ -127,6 +128,7 @@ bool parse_device_options(const po::variables_map& vm, DeviceOptions& d, std::st
   if (budget) d.plan_budget_ms = *budget;
   if (vm.count("plotter")) d.plotter = vm["plotter"].as<std::string>();
   d.clip = vm.count("clip") > 0;
+  d.decorations = vm.count("plain") == 0;
   if (vm.count("hpgl-moves")) {
     const std::string v = vm["hpgl-moves"].as<std::string>();
     if (v != "relative" && v != "absolute") {

@@ -57,6 +57,7 @@ struct DeviceOptions {
   std::optional<double> margin_mm;           // --margin
   std::optional<double> mm_per_unit;         // --scale: 1 picture unit = N mm instead of fit-to-page
   double dpi = 150;                          // --dpi (PNG)
+  bool decorations = true;                   // --plain: no frame border or caption
   std::optional<double> line_width_mm;       // --line-width: every pen's width (cairo devices)
   std::optional<std::string> plotter;        // --plotter NAME (HPGL profile)
   bool clip = false;                         // --clip: clip HPGL to the plotter's range instead of failing

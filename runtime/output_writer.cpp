@@ -146,6 +146,7 @@ std::vector<WrittenFrame> write_output(const OutputTarget& target, const std::ve
                                                     : CairoFormat::Png;
       cairo.pens = pen_table_for(first, d);
       cairo.dpi = d.dpi;
+      cairo.decorations = d.decorations;
       cairo.title = options.title;
       std::vector<PlotPage> pages;
       pages.reserve(plots.size());
