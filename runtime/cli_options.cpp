@@ -44,9 +44,11 @@ po::options_description visible_options() {
        "pen width on PDF/SVG/PNG (default 0.25)")  //
       ("plotter", po::value<std::string>()->value_name("NAME"),
        "HPGL plotter profile: generic (default), hp7475a, hp7440a, hp7550, roland-dxy, or one the script "
-       "declares")                                                     //
-      ("plain", "no frame border or caption on PDF/SVG/PNG")           //
-      ("clip", "clip HPGL to the plotter's range instead of failing")  //
+       "declares")  //
+      ("step", po::value<std::string>()->value_name("MM"),
+       "step of the incremental plotter tape (.steps; default 0.1 mm)")  //
+      ("plain", "no frame border or caption on PDF/SVG/PNG")             //
+      ("clip", "clip HPGL to the plotter's range instead of failing")    //
       ("hpgl-moves", po::value<std::string>()->value_name("relative|absolute"),
        "HPGL moves (default: the profile's)")  //
       ("pen-order", po::value<std::string>()->value_name("none|greedy|optimized"),
@@ -123,6 +125,9 @@ bool parse_device_options(const po::variables_map& vm, DeviceOptions& d, std::st
       !number_option(vm, "line-width", 0.01, 10, d.line_width_mm, error))
     return false;
   if (dpi) d.dpi = *dpi;
+  std::optional<double> step;
+  if (!number_option(vm, "step", 0.001, 10, step, error)) return false;
+  if (step) d.step_mm = *step;
   std::optional<double> budget;
   if (!number_option(vm, "plan-budget", 0, 600000, budget, error)) return false;
   if (budget) d.plan_budget_ms = *budget;

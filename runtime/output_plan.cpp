@@ -12,7 +12,7 @@ namespace hlr::runtime {
 
 namespace fs = std::filesystem;
 
-const char* supported_extensions() { return "pdf, svg, png, hpgl (or .plt), json"; }
+const char* supported_extensions() { return "pdf, svg, png, hpgl (or .plt), steps, json"; }
 
 std::optional<Device> device_for(const fs::path& path) {
   std::string ext = path.extension().string();
@@ -21,12 +21,13 @@ std::optional<Device> device_for(const fs::path& path) {
   if (ext == ".svg") return Device::Svg;
   if (ext == ".png") return Device::Png;
   if (ext == ".hpgl" || ext == ".plt" || ext == ".hpg") return Device::Hpgl;
+  if (ext == ".steps") return Device::Steps;
   if (ext == ".json") return Device::Json;
   return std::nullopt;
 }
 
 bool single_frame(Device device) {
-  return device == Device::Svg || device == Device::Png || device == Device::Hpgl;
+  return device == Device::Svg || device == Device::Png || device == Device::Hpgl || device == Device::Steps;
 }
 
 const char* device_name(Device device) {
@@ -39,6 +40,8 @@ const char* device_name(Device device) {
       return "PNG";
     case Device::Hpgl:
       return "HPGL";
+    case Device::Steps:
+      return "plotter-steps";
     case Device::Json:
       return "JSON";
   }
@@ -109,15 +112,15 @@ std::vector<OutputTarget> plan_outputs(const std::optional<std::string>& cli_pat
       path = has_frame_field(*cli_pattern) ? substitute_frame(*cli_pattern, frames[i].frame) : *cli_pattern;
       problem = output_problem(path, program);
       if (!problem.empty())
-        throw RunError("-o " + problem,
-                       "choose a name ending in .pdf, .svg, .png, .hpgl or .json that is not an input file",
-                       64);
+        throw RunError(
+            "-o " + problem,
+            "choose a name ending in .pdf, .svg, .png, .hpgl, .steps or .json that is not an input file", 64);
     } else if (frames[i].script_output) {
       path = frames[i].script_output->name;
       problem = output_problem(path, program);
       if (!problem.empty())
         fail(frames[i].script_output->span, "output " + problem,
-             "choose a name ending in .pdf, .svg, .png, .hpgl or .json that is not an input file");
+             "choose a name ending in .pdf, .svg, .png, .hpgl, .steps or .json that is not an input file");
     } else {
       path = fallback;
       problem = output_problem(path, program);

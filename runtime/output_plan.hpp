@@ -18,7 +18,7 @@
 
 namespace hlr::runtime {
 
-enum class Device { Pdf, Svg, Png, Hpgl, Json };
+enum class Device { Pdf, Svg, Png, Hpgl, Steps, Json };
 
 // Devices that hold a single frame per file.
 bool single_frame(Device device);
@@ -36,7 +36,7 @@ struct FrameName {
   std::optional<OutputSetting> script_output;
 };
 
-// "pdf, svg, png, hpgl (or .plt), json": for messages.
+// "pdf, svg, png, hpgl (or .plt), steps, json": for messages.
 const char* supported_extensions();
 std::optional<Device> device_for(const std::filesystem::path& path);
 
@@ -58,6 +58,7 @@ struct DeviceOptions {
   std::optional<double> mm_per_unit;         // --scale: 1 picture unit = N mm instead of fit-to-page
   double dpi = 150;                          // --dpi (PNG)
   bool decorations = true;                   // --plain: no frame border or caption
+  double step_mm = 0.1;                      // --step: the incremental plotter's step (.steps)
   std::optional<double> line_width_mm;       // --line-width: every pen's width (cairo devices)
   std::optional<std::string> plotter;        // --plotter NAME (HPGL profile)
   bool clip = false;                         // --clip: clip HPGL to the plotter's range instead of failing

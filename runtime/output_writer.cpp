@@ -11,6 +11,7 @@
 #include "core/device/json_device.hpp"
 #include "core/device/page_plot.hpp"
 #include "core/device/pen_style.hpp"
+#include "core/device/step_device.hpp"
 #include "runtime/eval_error.hpp"
 #include "runtime/output_plan.hpp"
 
@@ -120,6 +121,11 @@ std::vector<WrittenFrame> write_output(const OutputTarget& target, const std::ve
     plot.spec.margin_mm = std::max(plot.spec.margin_mm, hpgl_min_margin_mm(*profile, w, h));
     check_page_spec(plot.spec);
     plot.plan.home = hpgl_home_on_page(*profile, w, h);
+  } else if (target.device == Device::Steps) {
+    // The thesis's Benson Lehner: 0.1 mm steps at up to 2 cm/s, the pen starting at the sheet's corner.
+    plot.plan.grid_mm = d.step_mm;
+    plot.plan.home = {0, plot.spec.paper.height_mm};
+    plot.plan.speeds = {20, 20, 0.1};
   } else {
     plot.plan.speeds = hpgl_profile_by_name("generic")->speeds;
   }
@@ -158,6 +164,12 @@ std::vector<WrittenFrame> write_output(const OutputTarget& target, const std::ve
       HpglOptions hpgl;
       hpgl.clip = d.clip;
       write_hpgl(target.path, plots.front().page, *profile, hpgl);
+      break;
+    }
+    case Device::Steps: {
+      StepOptions steps;
+      steps.step_mm = d.step_mm;
+      write_plotter_steps(target.path, plots.front().page, steps);
       break;
     }
     case Device::Json: {

@@ -168,7 +168,7 @@ TEST(Frames, OutputNamesGroupFramesIntoFiles) {
     FAIL();
   } catch (const RunError& e) {
     EXPECT_EQ(e.exit_code, 64);
-    EXPECT_NE(std::string(e.what()).find("supported: pdf, svg, png, hpgl (or .plt), json"),
+    EXPECT_NE(std::string(e.what()).find("supported: pdf, svg, png, hpgl (or .plt), steps, json"),
               std::string::npos);
   }
   s.name = "mine.gif";
