@@ -24,7 +24,8 @@ struct PlotPiece {
 enum class PenOrder {
   None,       // file order: pieces as given, a piece starting where the previous ended continues its stroke
   Greedy,     // Euler strokes, then nearest-endpoint ordering with reversal
-  Optimized,  // Euler strokes with matched odd vertices, greedy, then 2-opt / Or-opt within the budget
+  Optimized,  // Euler strokes with matched odd vertices, drawn circuit by circuit, then 2-opt / Or-opt
+              // within the budget; never more pen-up travel than Greedy (the better plan is kept)
 };
 
 // The plotter's speeds, for the time estimate (defaults: a 7475A-class pen plotter).
@@ -40,10 +41,11 @@ struct PlanOptions {
   Point2 home{0, 0};          // the pen starts here and returns here (page mm)
   double time_budget_ms = 200;  // for the improvement passes of Optimized, per page
   PlotterSpeeds speeds;
-  // Greedy and Optimized: a piece is split at (joined to) every vertex within this many grid units of it
-  // that lies between its end points — T-junctions and overlapping, nearly collinear pieces that snapping
-  // moved apart. 0 joins only vertices exactly on the snapped piece. See core/plan/pen_graph.hpp.
-  double merge_tolerance_grid = 1.0;
+  // A piece is split at (joined to) every vertex exactly on it between its end points, and at every loose
+  // end (a vertex where a single piece ends) within this many grid units of it: T-junctions that snapping
+  // moved off the line they meet (by up to √2 units). 0 joins only vertices exactly on the snapped piece.
+  // See core/plan/pen_graph.hpp.
+  double merge_tolerance_grid = 1.5;
 };
 
 struct PlanStats {
@@ -76,8 +78,11 @@ struct PenPlan {
 // layer, joining a piece to the previous one when it starts where that one ended. Greedy and Optimized
 // draw every edge of the merged drawing graph exactly once, with lifts == lift_lower_bound, dropping a
 // stroke's middle point only where the two grid segments meeting there are exactly collinear.
-// Optimized is deterministic unless time_budget_ms runs out first (stats.budget_exhausted); its work is
-// otherwise capped in proportion to the stroke count.
+// Optimized pairs the odd vertices of each pen and layer by a minimum-weight matching (exact up to 16 of
+// them; greedy plus exchanges beyond), follows the augmented Euler circuits so that the pen-up moves are
+// the matched pairs, links the circuits nearest first, and improves the order with 2-opt and Or-opt;
+// groups of up to 10 strokes are ordered exactly instead. It is deterministic unless time_budget_ms runs
+// out first (stats.budget_exhausted); its work is otherwise capped in proportion to the stroke count.
 PenPlan plan_pen_strokes(const std::vector<PlotPiece>& pieces, const PlanOptions& options = {});
 
 }  // namespace hlr

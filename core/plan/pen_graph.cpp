@@ -1,0 +1,218 @@
+#include "core/plan/pen_graph.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+
+#include "core/plan/flat_index.hpp"
+
+namespace hlr::plan {
+namespace {
+
+std::int64_t floor_div(double x, double s) { return static_cast<std::int64_t>(std::floor(x / s)); }
+
+// A vertex lying on a segment: its parameter along the segment (dot product) and its number.
+struct Split {
+  std::int64_t t;
+  std::uint32_t vertex;
+};
+
+}  // namespace
+
+void compute_graph_structure(PenGraph& g) {
+  const std::size_t nv = g.vertices.size();
+  g.degree.assign(nv, 0);
+  for (const GraphEdge& e : g.edges) ++g.degree[e.u], ++g.degree[e.v];
+
+  // Union-find with path halving and union by size.
+  std::vector<std::uint32_t> parent(nv), size(nv, 1);
+  std::iota(parent.begin(), parent.end(), 0u);
+  auto find = [&](std::uint32_t x) {
+    while (parent[x] != x) x = parent[x] = parent[parent[x]];
+    return x;
+  };
+  for (const GraphEdge& e : g.edges) {
+    std::uint32_t a = find(e.u), b = find(e.v);
+    if (a == b) continue;
+    if (size[a] < size[b]) std::swap(a, b);
+    parent[b] = a;
+    size[a] += size[b];
+  }
+  // Components numbered in order of their lowest vertex: deterministic.
+  constexpr std::uint32_t kNone = ~0u;
+  std::vector<std::uint32_t> label(nv, kNone);
+  g.component.assign(nv, 0);
+  g.components = 0;
+  for (std::uint32_t v = 0; v < nv; ++v) {
+    const std::uint32_t r = find(v);
+    if (label[r] == kNone) label[r] = static_cast<std::uint32_t>(g.components++);
+    g.component[v] = label[r];
+  }
+  g.odd.clear();
+  g.component_odd.assign(g.components, 0);
+  for (std::uint32_t v = 0; v < nv; ++v)
+    if (g.degree[v] % 2) {
+      g.odd.push_back(v);
+      ++g.component_odd[g.component[v]];
+    }
+  g.lift_lower_bound = 0;
+  for (std::uint32_t k : g.component_odd) g.lift_lower_bound += std::max<std::size_t>(1, k / 2);
+}
+
+PenGraph build_pen_graph(std::span<const GridSegment> segments, double tolerance) {
+  PenGraph g;
+  tolerance = std::isfinite(tolerance) ? std::max(0.0, tolerance) : 0.0;
+
+  // 1. Vertices: one per distinct snapped end point.
+  FlatIndex vertex_index(segments.size() + 16);
+  std::vector<GraphEdge> pieces;  // (u, v) in piece order, unordered
+  pieces.reserve(segments.size());
+  auto vertex = [&](GridPoint p) {
+    const auto [id, inserted] =
+        vertex_index.insert(pack_point_key(p.x, p.y), static_cast<std::uint32_t>(g.vertices.size()));
+    if (inserted) g.vertices.push_back(p);
+    return id;
+  };
+  for (const GridSegment& s : segments) {
+    if (s.a == s.b) continue;
+    if (std::max({std::llabs(s.a.x), std::llabs(s.a.y), std::llabs(s.b.x), std::llabs(s.b.y)}) >
+        kMaxGridCoordinate)
+      continue;
+    const std::uint32_t u = vertex(s.a), v = vertex(s.b);
+    pieces.push_back({u, v});
+  }
+  const std::size_t nv = g.vertices.size();
+  std::vector<std::uint32_t> raw_degree(nv, 0);  // pieces ending at each vertex
+  for (const GraphEdge& p : pieces) ++raw_degree[p.u], ++raw_degree[p.v];
+  if (pieces.empty()) {
+    compute_graph_structure(g);
+    return g;
+  }
+
+  // 2. A uniform grid of cells over the vertices, about two vertices per cell, as a dense array of cell
+  //    ranges (CSR) with each cell's vertices and coordinates stored together.
+  std::int64_t xmin = g.vertices[0].x, xmax = xmin, ymin = g.vertices[0].y, ymax = ymin;
+  for (const GridPoint& p : g.vertices) {
+    xmin = std::min(xmin, p.x), xmax = std::max(xmax, p.x);
+    ymin = std::min(ymin, p.y), ymax = std::max(ymax, p.y);
+  }
+  const double width = static_cast<double>(xmax - xmin), height = static_cast<double>(ymax - ymin);
+  double cell = std::max({2.0, 2 * tolerance + 1,
+                          std::sqrt(2 * std::max(width, 1.0) * std::max(height, 1.0) / static_cast<double>(nv))});
+  std::int64_t cx0, cy0, nx, ny;
+  for (;;) {
+    cx0 = floor_div(static_cast<double>(xmin), cell) - 1, cy0 = floor_div(static_cast<double>(ymin), cell) - 1;
+    nx = floor_div(static_cast<double>(xmax), cell) - cx0 + 2, ny = floor_div(static_cast<double>(ymax), cell) - cy0 + 2;
+    if (static_cast<double>(nx) * static_cast<double>(ny) <= 4.0 * static_cast<double>(nv) + 4096) break;
+    cell *= 1.5;
+  }
+  auto cell_of = [&](std::int64_t cx, std::int64_t cy) -> std::int64_t {
+    cx -= cx0, cy -= cy0;
+    return cx < 0 || cy < 0 || cx >= nx || cy >= ny ? -1 : cy * nx + cx;
+  };
+  std::vector<std::uint32_t> cell_start(static_cast<std::size_t>(nx * ny) + 1, 0);
+  std::vector<std::uint32_t> vertex_cell(nv);
+  for (std::uint32_t v = 0; v < nv; ++v) {
+    vertex_cell[v] = static_cast<std::uint32_t>(cell_of(floor_div(static_cast<double>(g.vertices[v].x), cell),
+                                                        floor_div(static_cast<double>(g.vertices[v].y), cell)));
+    ++cell_start[vertex_cell[v] + 1];
+  }
+  for (std::size_t c = 1; c < cell_start.size(); ++c) cell_start[c] += cell_start[c - 1];
+  std::vector<std::uint32_t> cell_vertex(nv);
+  std::vector<GridPoint> cell_point(nv);
+  {
+    std::vector<std::uint32_t> fill(cell_start.begin(), cell_start.end() - 1);
+    for (std::uint32_t v = 0; v < nv; ++v) {
+      const std::uint32_t at = fill[vertex_cell[v]]++;
+      cell_vertex[at] = v;
+      cell_point[at] = g.vertices[v];
+    }
+  }
+
+  // 3. Split every piece at the vertices on it.
+  const double tol2 = tolerance * tolerance;
+  const double reach = tolerance * std::sqrt(2.0) + 1e-9;  // across the minor axis, per unit of major axis
+  std::vector<Split> splits;
+  std::vector<GraphEdge> raw;  // sub-pieces, u < v, possibly repeated
+  raw.reserve(pieces.size() + pieces.size() / 4);
+  auto add_edge = [&](std::uint32_t a, std::uint32_t b) {
+    if (a == b) return;
+    raw.push_back({std::min(a, b), std::max(a, b)});
+  };
+  for (const GraphEdge& piece : pieces) {
+    const GridPoint pa = g.vertices[piece.u], pb = g.vertices[piece.v];
+    const std::int64_t dx = pb.x - pa.x, dy = pb.y - pa.y;
+    const std::int64_t len2 = dx * dx + dy * dy;
+    splits.clear();
+    auto test_cell = [&](std::int64_t cx, std::int64_t cy) {
+      const std::int64_t c = cell_of(cx, cy);
+      if (c < 0) return;
+      for (std::uint32_t i = cell_start[static_cast<std::size_t>(c)], e = cell_start[static_cast<std::size_t>(c) + 1]; i < e; ++i) {
+        const GridPoint pw = cell_point[i];
+        const std::int64_t wx = pw.x - pa.x, wy = pw.y - pa.y;
+        const std::int64_t t = wx * dx + wy * dy;
+        if (t <= 0 || t >= len2) continue;  // also skips the piece's own end points
+        const std::int64_t cross = dx * wy - dy * wx;
+        if (cross != 0) {
+          if (raw_degree[cell_vertex[i]] != 1) continue;  // the tolerance is for loose ends only
+          const double cr = static_cast<double>(cross);
+          if (cr * cr > tol2 * static_cast<double>(len2)) continue;
+        }
+        splits.push_back({t, cell_vertex[i]});
+      }
+    };
+    // Walk the cells within `tolerance` of the piece, one cell column (or row) of the major axis at a time.
+    const bool x_major = std::llabs(dx) >= std::llabs(dy);
+    const double a0 = static_cast<double>(x_major ? pa.x : pa.y), a1 = static_cast<double>(x_major ? pb.x : pb.y);
+    const double b0 = static_cast<double>(x_major ? pa.y : pa.x), b1 = static_cast<double>(x_major ? pb.y : pb.x);
+    const double lo = std::min(a0, a1), hi = std::max(a0, a1);
+    const double slope = (b1 - b0) / (a1 - a0);  // |slope| ≤ 1; a1 ≠ a0 on the major axis
+    const std::int64_t c_first = floor_div(lo - tolerance, cell), c_last = floor_div(hi + tolerance, cell);
+    for (std::int64_t c = c_first; c <= c_last; ++c) {
+      const double s0 = std::clamp(static_cast<double>(c) * cell, lo, hi);
+      const double s1 = std::clamp(static_cast<double>(c + 1) * cell, lo, hi);
+      const double m0 = b0 + slope * (s0 - a0), m1 = b0 + slope * (s1 - a0);
+      const std::int64_t r_first = floor_div(std::min(m0, m1) - reach, cell);
+      const std::int64_t r_last = floor_div(std::max(m0, m1) + reach, cell);
+      for (std::int64_t r = r_first; r <= r_last; ++r) x_major ? test_cell(c, r) : test_cell(r, c);
+    }
+    if (splits.empty()) {
+      add_edge(piece.u, piece.v);
+      continue;
+    }
+    std::sort(splits.begin(), splits.end(),
+              [](const Split& x, const Split& y) { return x.t != y.t ? x.t < y.t : x.vertex < y.vertex; });
+    std::uint32_t prev = piece.u;
+    for (const Split& sp : splits) {
+      add_edge(prev, sp.vertex);
+      prev = sp.vertex;
+    }
+    add_edge(prev, piece.v);
+  }
+
+  // 4. Deduplicate: bucket the sub-pieces by their lower vertex (counting sort, stable), drop repeats of
+  //    the upper one within each bucket. Edges come out ordered by (u, first appearance).
+  {
+    std::vector<std::uint32_t> start(nv + 1, 0);
+    for (const GraphEdge& e : raw) ++start[e.u + 1];
+    for (std::size_t v = 0; v < nv; ++v) start[v + 1] += start[v];
+    std::vector<std::uint32_t> upper(raw.size());
+    {
+      std::vector<std::uint32_t> fill(start.begin(), start.end() - 1);
+      for (const GraphEdge& e : raw) upper[fill[e.u]++] = e.v;
+    }
+    std::vector<std::uint32_t> last_seen(nv, ~0u);  // last_seen[v] == u: edge (u, v) already taken
+    g.edges.reserve(raw.size());
+    for (std::uint32_t u = 0; u < nv; ++u)
+      for (std::uint32_t i = start[u]; i < start[u + 1]; ++i) {
+        const std::uint32_t v = upper[i];
+        if (last_seen[v] == u) continue;
+        last_seen[v] = u;
+        g.edges.push_back({u, v});
+      }
+  }
+  compute_graph_structure(g);
+  return g;
+}
+
+}  // namespace hlr::plan

@@ -1,0 +1,227 @@
+#include "core/plan/pen_plan.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <map>
+#include <stdexcept>
+#include <utility>
+
+#include "core/plan/euler_strokes.hpp"
+#include "core/plan/odd_matching.hpp"
+#include "core/plan/pen_graph.hpp"
+#include "core/plan/stroke_order.hpp"
+
+namespace hlr {
+namespace {
+
+using plan::GridSegment;
+using plan::GridStroke;
+using plan::PenGraph;
+using plan::Pt;
+using plan::TourEnds;
+using Clock = std::chrono::steady_clock;
+
+struct Group {
+  int pen;
+  StrokeLayer layer;
+  std::vector<GridSegment> segments;  // snapped, non-degenerate, in file order
+  PenGraph graph;
+};
+
+// Snaps one coordinate; false when it is not finite or beyond the grid range.
+bool snap(double mm, double grid, std::int64_t& out) {
+  const double g = mm / grid;
+  if (!std::isfinite(g) || std::fabs(g) > static_cast<double>(plan::kMaxGridCoordinate)) return false;
+  out = std::llround(g);
+  return true;
+}
+
+std::vector<Group> snap_groups(const std::vector<PlotPiece>& pieces, double grid, std::size_t& dropped) {
+  std::map<std::pair<int, int>, std::size_t> index;  // (pen, layer) → group; Visible (0) before Hidden (1)
+  std::vector<Group> groups;
+  for (const PlotPiece& p : pieces) {
+    GridSegment s;
+    if (!snap(p.a.x, grid, s.a.x) || !snap(p.a.y, grid, s.a.y) || !snap(p.b.x, grid, s.b.x) ||
+        !snap(p.b.y, grid, s.b.y) || s.a == s.b) {
+      ++dropped;
+      continue;
+    }
+    const auto key = std::make_pair(p.pen, p.layer == StrokeLayer::Visible ? 0 : 1);
+    auto [it, inserted] = index.try_emplace(key, groups.size());
+    if (inserted) groups.push_back(Group{p.pen, p.layer, {}, {}});
+    groups[it->second].segments.push_back(s);
+  }
+  std::vector<Group> ordered;
+  ordered.reserve(groups.size());
+  for (const auto& [key, i] : index) ordered.push_back(std::move(groups[i]));
+  return ordered;
+}
+
+// A planned group: strokes as graph vertex lists.
+struct GroupStrokes {
+  std::vector<GridStroke> strokes;
+};
+
+struct Sequence {
+  std::vector<GroupStrokes> groups;
+  double travel = 0;  // grid units
+  std::size_t moves = 0;
+  bool deadline_hit = false;
+};
+
+std::vector<plan::VertexPair> matched_pairing(const PenGraph& g) {
+  std::vector<Pt> points;
+  points.reserve(g.odd.size());
+  for (std::uint32_t v : g.odd)
+    points.push_back({static_cast<double>(g.vertices[v].x), static_cast<double>(g.vertices[v].y)});
+  std::vector<plan::VertexPair> pairs;
+  for (const auto& [i, j] : plan::min_weight_matching(points)) pairs.emplace_back(g.odd[i], g.odd[j]);
+  return pairs;
+}
+
+// `budget` (Optimized): clock time left for the improvement passes, shared by the groups in turn.
+Sequence plan_sequence(const std::vector<Group>& groups, Pt home, bool optimize, Clock::duration budget) {
+  Sequence out;
+  Pt here = home;
+  for (std::size_t gi = 0; gi < groups.size(); ++gi) {
+    const PenGraph& g = groups[gi].graph;
+    const TourEnds ends{here, home, gi + 1 < groups.size()};
+    GroupStrokes gs;
+    gs.strokes = plan::euler_strokes(g, optimize ? matched_pairing(g) : plan::sequential_pairing(g));
+    if (!optimize) {
+      plan::order_greedy(gs.strokes, g.vertices, ends);
+    } else if (plan::order_exact(gs.strokes, g.vertices, ends)) {
+      // Small enough for the exact order: try the sequential pairing's strokes too, keep the shorter.
+      std::vector<GridStroke> other = plan::euler_strokes(g, plan::sequential_pairing(g));
+      if (plan::order_exact(other, g.vertices, ends) &&
+          plan::tour_travel(other, g.vertices, ends) < plan::tour_travel(gs.strokes, g.vertices, ends))
+        gs.strokes = std::move(other);
+    } else {
+      plan::order_circuits(gs.strokes, g.vertices, ends);
+      const Clock::time_point started = Clock::now();
+      const plan::ImproveResult r = plan::improve_order(gs.strokes, g.vertices, ends, started + budget);
+      budget -= std::min(budget, Clock::now() - started);
+      out.moves += r.moves;
+      out.deadline_hit = out.deadline_hit || r.deadline_hit;
+    }
+    out.travel += plan::tour_travel(gs.strokes, g.vertices, ends);
+    if (!gs.strokes.empty()) {
+      const GridPoint last = g.vertices[gs.strokes.back().vertices.back()];
+      here = {static_cast<double>(last.x), static_cast<double>(last.y)};
+    }
+    out.groups.push_back(std::move(gs));
+  }
+  return out;
+}
+
+Point2 to_mm(GridPoint p, double grid) { return {static_cast<double>(p.x) * grid, static_cast<double>(p.y) * grid}; }
+
+// Graph strokes → page strokes, dropping middle points where the path goes straight on exactly.
+void emit_strokes(const std::vector<Group>& groups, const Sequence& seq, double grid, std::vector<PlotStroke>& out) {
+  for (std::size_t gi = 0; gi < groups.size(); ++gi) {
+    const std::vector<GridPoint>& v = groups[gi].graph.vertices;
+    for (const GridStroke& s : seq.groups[gi].strokes) {
+      PlotStroke ps;
+      ps.pen = groups[gi].pen;
+      ps.layer = groups[gi].layer;
+      ps.points.reserve(s.vertices.size());
+      GridPoint kept = v[s.vertices.front()];
+      ps.points.push_back(to_mm(kept, grid));
+      for (std::size_t k = 1; k + 1 < s.vertices.size(); ++k) {
+        const GridPoint b = v[s.vertices[k]], c = v[s.vertices[k + 1]];
+        const std::int64_t ux = b.x - kept.x, uy = b.y - kept.y, wx = c.x - b.x, wy = c.y - b.y;
+        if (ux * wy - uy * wx == 0 && ux * wx + uy * wy > 0) continue;  // straight on
+        kept = b;
+        ps.points.push_back(to_mm(b, grid));
+      }
+      ps.points.push_back(to_mm(v[s.vertices.back()], grid));
+      out.push_back(std::move(ps));
+    }
+  }
+}
+
+void file_order_strokes(const std::vector<Group>& groups, double grid, std::vector<PlotStroke>& out) {
+  for (const Group& g : groups) {
+    GridPoint end{};
+    bool open = false;
+    for (const GridSegment& s : g.segments) {
+      if (!open || !(s.a == end)) {
+        PlotStroke ps;
+        ps.pen = g.pen;
+        ps.layer = g.layer;
+        ps.points.push_back(to_mm(s.a, grid));
+        out.push_back(std::move(ps));
+        open = true;
+      }
+      out.back().points.push_back(to_mm(s.b, grid));
+      end = s.b;
+    }
+  }
+}
+
+void fill_travel_stats(const std::vector<PlotStroke>& strokes, const PlanOptions& o, PlanStats& st) {
+  st.lifts = strokes.size();
+  st.pen_down_mm = 0;
+  for (const PlotStroke& s : strokes)
+    for (std::size_t k = 1; k < s.points.size(); ++k) st.pen_down_mm += distance(s.points[k - 1], s.points[k]);
+  st.pen_up_mm = st.pen_up_mean_mm = st.pen_up_median_mm = 0;
+  if (!strokes.empty()) {
+    std::vector<double> moves;
+    moves.reserve(strokes.size() + 1);
+    Point2 here = o.home;
+    for (const PlotStroke& s : strokes) {
+      moves.push_back(distance(here, s.points.front()));
+      here = s.points.back();
+    }
+    moves.push_back(distance(here, o.home));
+    for (double m : moves) st.pen_up_mm += m;
+    st.pen_up_mean_mm = st.pen_up_mm / static_cast<double>(moves.size());
+    std::sort(moves.begin(), moves.end());
+    const std::size_t h = moves.size() / 2;
+    st.pen_up_median_mm = moves.size() % 2 ? moves[h] : 0.5 * (moves[h - 1] + moves[h]);
+  }
+  st.plot_seconds = st.pen_down_mm / o.speeds.pen_down_mm_per_s + st.pen_up_mm / o.speeds.pen_up_mm_per_s +
+                    static_cast<double>(st.lifts) * o.speeds.lift_s;
+}
+
+}  // namespace
+
+PenPlan plan_pen_strokes(const std::vector<PlotPiece>& pieces, const PlanOptions& options) {
+  const Clock::time_point t0 = Clock::now();
+  const double grid = options.grid_mm;
+  if (!std::isfinite(grid) || !(grid > 0)) throw std::invalid_argument("plan_pen_strokes: grid_mm must be positive");
+  PenPlan plan;
+  PlanStats& st = plan.stats;
+  st.pieces = pieces.size();
+  std::vector<Group> groups = snap_groups(pieces, grid, st.dropped_pieces);
+  for (Group& g : groups) {
+    g.graph = plan::build_pen_graph(g.segments, options.merge_tolerance_grid);
+    st.merged_pieces += g.graph.edges.size();
+    st.lift_lower_bound += g.graph.lift_lower_bound;
+    st.components += g.graph.components;
+    st.odd_vertices += g.graph.odd.size();
+  }
+  const Pt home{options.home.x / grid, options.home.y / grid};
+  if (options.order == PenOrder::None) {
+    file_order_strokes(groups, grid, plan.strokes);
+  } else {
+    // The budget bounds the improvement passes only (PlanOptions::time_budget_ms); at most a day.
+    const double budget_ms = std::isnan(options.time_budget_ms) ? 0.0 : std::clamp(options.time_budget_ms, 0.0, 864e5);
+    const auto budget = std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double, std::milli>(budget_ms));
+    Sequence chosen = plan_sequence(groups, home, false, budget);
+    if (options.order == PenOrder::Optimized) {
+      Sequence optimized = plan_sequence(groups, home, true, budget);
+      st.improvement_moves = optimized.moves;
+      st.budget_exhausted = optimized.deadline_hit;
+      if (optimized.travel <= chosen.travel) chosen = std::move(optimized);
+      else st.kept_greedy = true;
+    }
+    emit_strokes(groups, chosen, grid, plan.strokes);
+  }
+  fill_travel_stats(plan.strokes, options, st);
+  st.planning_ms = std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
+  return plan;
+}
+
+}  // namespace hlr
