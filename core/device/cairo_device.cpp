@@ -13,6 +13,7 @@
 
 #include "core/device/atomic_file.hpp"
 #include "core/device/page_layout.hpp"
+#include "core/geometry/clip2d.hpp"
 
 namespace hlr {
 namespace {
@@ -82,27 +83,14 @@ void validate(const std::vector<PlotPage>& pages, const CairoOptions& o) {
   }
 }
 
-// Liang–Barsky: clips the segment a→b to `box`, false when nothing of it is inside.
+// Clips the segment a→b to `box` (core/geometry/clip2d.hpp), false when nothing of it is inside.
 bool clip_segment(Point2& a, Point2& b, const Rect2& box) {
-  double t0 = 0, t1 = 1;
-  const double dx = b.x - a.x, dy = b.y - a.y;
-  const double p[] = {-dx, dx, -dy, dy};
-  const double q[] = {a.x - box.xmin, box.xmax - a.x, a.y - box.ymin, box.ymax - a.y};
-  for (int i = 0; i < 4; ++i) {
-    if (p[i] == 0) {
-      if (q[i] < 0) return false;
-      continue;
-    }
-    const double t = q[i] / p[i];
-    if (p[i] < 0)
-      t0 = std::max(t0, t);
-    else
-      t1 = std::min(t1, t);
-    if (t0 > t1) return false;
-  }
+  const auto range = clip_segment_to_rect(a, b, box);
+  if (!range) return false;
   const Point2 a0 = a;
-  if (t0 > 0) a = {a0.x + t0 * dx, a0.y + t0 * dy};
-  if (t1 < 1) b = {a0.x + t1 * dx, a0.y + t1 * dy};
+  const double dx = b.x - a.x, dy = b.y - a.y;
+  if (range->first > 0) a = {a0.x + range->first * dx, a0.y + range->first * dy};
+  if (range->second < 1) b = {a0.x + range->second * dx, a0.y + range->second * dy};
   return true;
 }
 

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "core/device/atomic_file.hpp"
+#include "core/geometry/clip2d.hpp"
 
 namespace hlr {
 namespace {
@@ -148,24 +149,13 @@ Placement place(const HpglProfile& profile, double page_w, double page_h, std::s
   return pl;
 }
 
-// Liang–Barsky: the part t ∈ [t0, t1] of a→b inside the rectangle; false when there is none (or a point).
+// The part t ∈ [t0, t1] of a→b inside the rectangle (core/geometry/clip2d.hpp); false when there is none
+// (or a point).
 bool clip_segment(Point2 a, Point2 b, const Rect2& box, double& t0, double& t1) {
-  const double dx = b.x - a.x, dy = b.y - a.y;
-  const double p[4] = {-dx, dx, -dy, dy};
-  const double q[4] = {a.x - box.xmin, box.xmax - a.x, a.y - box.ymin, box.ymax - a.y};
-  t0 = 0;
-  t1 = 1;
-  for (int i = 0; i < 4; ++i) {
-    if (p[i] == 0) {
-      if (q[i] < 0) return false;
-      continue;
-    }
-    const double t = q[i] / p[i];
-    if (p[i] < 0)
-      t0 = std::max(t0, t);
-    else
-      t1 = std::min(t1, t);
-  }
+  const auto range = clip_segment_to_rect(a, b, box);
+  if (!range) return false;
+  t0 = range->first;
+  t1 = range->second;
   return t0 < t1;
 }
 
