@@ -68,6 +68,23 @@ TEST(Robustness, RandomTokenSoups) {
   }
 }
 
+// 1500 seeded variants of `sketch`, each with one to four random deletions or insertions of `alphabet`.
+void check_random_edits(const std::string& sketch, std::string_view alphabet) {
+  for (std::uint32_t seed = 0; seed < 1500; ++seed) {
+    std::mt19937 rng(seed);
+    std::string text = sketch;
+    for (int edits = 1 + static_cast<int>(rng() % 4); edits > 0; --edits) {
+      const std::size_t at = rng() % (text.size() + 1);
+      if (rng() % 2 == 0 && at < text.size()) {
+        text.erase(at, 1 + rng() % 3);
+      } else {
+        text.insert(at, 1, alphabet[rng() % alphabet.size()]);
+      }
+    }
+    check_result(text, seed);
+  }
+}
+
 TEST(Robustness, RandomEditsOfTheSketch) {
   const std::string sketch =
       "solid lblock {\n  vertex 1 = (0, 10, 0)\n  vertex top = (0, 10, 5)\n  face 1 top 3 4\n"
@@ -77,20 +94,7 @@ TEST(Robustness, RandomEditsOfTheSketch) {
       "draw m at rotate(z: 30) then scale(2)\n"
       "camera main = lookat(eye: (30, 20, 15), target: (0, 0, 0), up: (0, 0, 1), fov: 40)\n"
       "animate frames 48 fps 12\noutput \"landing-{frame:03}.pdf\" paper A4 landscape\nstyle hidden dashed\n";
-  static constexpr std::string_view kInsert = "(){}[],=.\"#@x1 \n";
-  for (std::uint32_t seed = 0; seed < 1500; ++seed) {
-    std::mt19937 rng(seed);
-    std::string text = sketch;
-    for (int edits = 1 + static_cast<int>(rng() % 4); edits > 0; --edits) {
-      const std::size_t at = rng() % (text.size() + 1);
-      if (rng() % 2 == 0 && at < text.size()) {
-        text.erase(at, 1 + rng() % 3);
-      } else {
-        text.insert(at, 1, kInsert[rng() % kInsert.size()]);
-      }
-    }
-    check_result(text, seed);
-  }
+  check_random_edits(sketch, "(){}[],=.\"#@x1 \n");
 }
 
 TEST(Robustness, RandomEditsOfDeviceSettings) {
@@ -101,20 +105,7 @@ TEST(Robustness, RandomEditsOfDeviceSettings) {
       "paper A4 landscape (margin: 10, scale: 0.5)\n"
       "draw a at translate(1, 0, 0) pen 2\ndraw b pen f(i)\npen 3 (width: 1)\n"
       "style hidden dashed pen 3\n";
-  static constexpr std::string_view kInsert = "(){}[],=.:\"#@x1 \n";
-  for (std::uint32_t seed = 0; seed < 1500; ++seed) {
-    std::mt19937 rng(seed);
-    std::string text = sketch;
-    for (int edits = 1 + static_cast<int>(rng() % 4); edits > 0; --edits) {
-      const std::size_t at = rng() % (text.size() + 1);
-      if (rng() % 2 == 0 && at < text.size()) {
-        text.erase(at, 1 + rng() % 3);
-      } else {
-        text.insert(at, 1, kInsert[rng() % kInsert.size()]);
-      }
-    }
-    check_result(text, seed);
-  }
+  check_random_edits(sketch, "(){}[],=.:\"#@x1 \n");
 }
 
 }  // namespace
