@@ -1,7 +1,9 @@
-// Writing one output target: every frame is laid out on its page and pen-planned once
-// (core/device/page_plot.hpp), and the device draws those strokes — so PDF, SVG, PNG, HPGL and JSON show
-// the same strokes in the same order. Settings: the command line's DeviceOptions override the script's
-// (paper, pens, plotter).
+// Writing one output target: every frame is laid out on its page and pen-planned once per file
+// (core/device/page_plot.hpp), and the device draws those strokes in that order. PDF, SVG, PNG and JSON
+// share one plan (page grid, home at the page's top-left corner); HPGL and the stepping tape are planned
+// on their own grid from their own home (the plotter's origin), so they draw the same lines, possibly in
+// another order. Settings: the command line's DeviceOptions override the script's (paper, pens,
+// plotter).
 #include <algorithm>
 #include <cstdio>
 

@@ -343,7 +343,8 @@ std::string to_hpgl(const PlotPage& page, const HpglProfile& profile, const Hpgl
         const std::string margin = mm(std::ceil(pl.min_margin() * 10) / 10);
         throw DeviceError(which + " reaches " + point + " on the page, outside what plotter '" +
                           profile.name + "' can draw on " + pl.paper + " paper: " + area +
-                          ". Use a page margin of at least " + margin + " mm, a bigger paper, or --clip");
+                          ". Fit the drawing to the page (no fixed scale) with a margin of at least " +
+                          margin + " mm, use a smaller scale or a bigger paper, or cut it with --clip");
       }
       pieces.push_back(std::move(u));
     }

@@ -2,7 +2,7 @@
 # `hlrscript check` accepts it; the PDF has one page per frame (poppler's pdfinfo); one SVG per frame that
 # librsvg's rsvg-convert converts; one PNG per frame whose header has the size the paper and dpi give;
 # one HPGL file per frame that hp2xx renders; and the JSON has one entry per frame whose pen plan reaches
-# the lift lower bound (CMake's own JSON parser reads it).
+# the lift lower bound with one lift per stroke, hidden ones included (CMake's own JSON parser reads it).
 #
 #   cmake -DHLRSCRIPT=path/to/hlrscript -DSCRIPT=examples/desens/landing.hls -DPAGES=33 -DWORK=scratch-dir
 #         -P tests/e2e/render_example.cmake
@@ -113,7 +113,7 @@ foreach(plot IN LISTS plots)
   endif()
 endforeach()
 
-# ---- JSON: one entry per frame; every frame's strokes reach the lift lower bound ----
+# ---- JSON: one entry per frame; every frame's strokes (visible + hidden) are its lifts, at the lower bound ----
 set(json "${dir}/${stem}.json")
 execute_process(COMMAND "${HLRSCRIPT}" "${SCRIPT}" -o "${json}"
                 WORKING_DIRECTORY "${dir}" RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err TIMEOUT 600)
@@ -131,8 +131,15 @@ foreach(i RANGE ${last})
   string(JSON lifts GET "${text}" frames ${i} stats lifts)
   string(JSON bound GET "${text}" frames ${i} stats lift_lower_bound)
   string(JSON strokes LENGTH "${text}" frames ${i} strokes)
-  if(NOT lifts EQUAL bound OR NOT strokes EQUAL lifts)
-    message(FATAL_ERROR "${json} frame ${i}: ${strokes} strokes, ${lifts} lifts, lower bound ${bound}")
+  # Lifts count every planned stroke: the hidden layer's too, when the script draws it.
+  string(JSON hidden ERROR_VARIABLE no_hidden LENGTH "${text}" frames ${i} hidden_strokes)
+  if(no_hidden)
+    set(hidden 0)
+  endif()
+  math(EXPR drawn "${strokes} + ${hidden}")
+  if(NOT lifts EQUAL bound OR NOT drawn EQUAL lifts)
+    message(FATAL_ERROR
+            "${json} frame ${i}: ${strokes} strokes + ${hidden} hidden, ${lifts} lifts, lower bound ${bound}")
   endif()
 endforeach()
 file(REMOVE_RECURSE "${dir}")

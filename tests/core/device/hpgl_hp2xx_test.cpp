@@ -3,21 +3,19 @@
 // (page y down; a portrait page turned 90° counter-clockwise onto a landscape sheet). hp2xx crops to the
 // drawing and knows only the nominal 0.025 mm unit, so both rasters are normalised by their inked bounding
 // box with one scale for both axes (an aspect or orientation error still shows), then compared: nearly
-// every inked pixel of each must have ink within 2 px in the other.
+// every inked pixel of each must have ink within 2 px in the other (tests/support/raster_compare.hpp).
 #include <cairo.h>
 #include <gtest/gtest.h>
 #include <unistd.h>
 
 #include <cmath>
-#include <cstdint>
-#include <cstdlib>
 #include <filesystem>
-#include <fstream>
 #include <functional>
 #include <string>
 #include <vector>
 
 #include "core/device/hpgl_device.hpp"
+#include "tests/support/raster_compare.hpp"
 
 namespace hlr {
 namespace {
@@ -26,50 +24,12 @@ namespace fs = std::filesystem;
 
 constexpr double kPxPerMm = 100 / 25.4;  // hp2xx -d 100 at true size
 
-struct Ink {
-  int w = 0, h = 0;
-  std::vector<std::uint8_t> on;
-  int x0 = 1 << 30, y0 = 1 << 30, x1 = -1, y1 = -1;  // inked bounding box
-  std::size_t count = 0;
-
-  bool at(int x, int y) const {
-    return x >= 0 && y >= 0 && x < w && y < h && on[static_cast<std::size_t>(y) * w + x];
-  }
-  bool near(double fx, double fy, int r) const {
-    const int cx = static_cast<int>(std::lround(fx)), cy = static_cast<int>(std::lround(fy));
-    for (int y = cy - r; y <= cy + r; ++y)
-      for (int x = cx - r; x <= cx + r; ++x)
-        if (at(x, y)) return true;
-    return false;
-  }
-};
-
-Ink ink_of(cairo_surface_t* s) {
-  Ink ink;
-  cairo_surface_flush(s);
-  ink.w = cairo_image_surface_get_width(s);
-  ink.h = cairo_image_surface_get_height(s);
-  const cairo_format_t format = cairo_image_surface_get_format(s);
-  const int stride = cairo_image_surface_get_stride(s);
-  const unsigned char* data = cairo_image_surface_get_data(s);
-  ink.on.assign(static_cast<std::size_t>(ink.w) * ink.h, 0);
-  for (int y = 0; y < ink.h; ++y) {
-    for (int x = 0; x < ink.w; ++x) {
-      const std::uint32_t px = *reinterpret_cast<const std::uint32_t*>(data + y * stride + 4 * x);
-      const double a = format == CAIRO_FORMAT_ARGB32 ? ((px >> 24) & 0xff) / 255.0 : 1.0;
-      // Premultiplied over white: luminance of the composited pixel.
-      const double r = ((px >> 16) & 0xff) + 255 * (1 - a), g = ((px >> 8) & 0xff) + 255 * (1 - a),
-                   b = (px & 0xff) + 255 * (1 - a);
-      if (0.299 * r + 0.587 * g + 0.114 * b < 160) {
-        ink.on[static_cast<std::size_t>(y) * ink.w + x] = 1;
-        ++ink.count;
-        ink.x0 = std::min(ink.x0, x), ink.x1 = std::max(ink.x1, x);
-        ink.y0 = std::min(ink.y0, y), ink.y1 = std::max(ink.y1, y);
-      }
-    }
-  }
-  return ink;
-}
+using test::Agreement;
+using test::compare_ink;
+using test::have_hp2xx;
+using test::hp2xx_ink;
+using test::Ink;
+using test::ink_of;
 
 // The expected picture: the strokes in image pixels through `place` (page mm → px), 1 px black lines.
 Ink expected_ink(const PlotPage& page, const std::function<Point2(Point2)>& place, int w, int h) {
@@ -95,47 +55,6 @@ Ink expected_ink(const PlotPage& page, const std::function<Point2(Point2)>& plac
   Ink ink = ink_of(s);
   cairo_surface_destroy(s);
   return ink;
-}
-
-bool have_hp2xx() { return std::system("command -v hp2xx >/dev/null 2>&1") == 0; }
-
-// hp2xx's rendering of `hpgl`, at true size, every pen black.
-Ink hp2xx_ink(const std::string& hpgl, const fs::path& dir) {
-  {
-    std::ofstream out(dir / "in.hpgl", std::ios::binary);
-    out << hpgl;
-  }
-  const std::string cmd =
-      "cd '" + dir.string() + "' && hp2xx -q -m png -d 100 -t -c 11111111 -f out.png in.hpgl";
-  EXPECT_EQ(std::system(cmd.c_str()), 0) << cmd;
-  cairo_surface_t* s = cairo_image_surface_create_from_png((dir / "out.png").c_str());
-  EXPECT_EQ(cairo_surface_status(s), CAIRO_STATUS_SUCCESS);
-  Ink ink = cairo_surface_status(s) == CAIRO_STATUS_SUCCESS ? ink_of(s) : Ink{};
-  cairo_surface_destroy(s);
-  return ink;
-}
-
-struct Agreement {
-  bool aspect_ok = false;
-  double expected_found = 0, actual_found = 0;  // fractions of inked pixels with ink within 2 px opposite
-};
-
-Agreement compare(const Ink& e, const Ink& a) {
-  Agreement g;
-  if (e.count == 0 || a.count == 0) return g;
-  const double s = static_cast<double>(a.x1 - a.x0) / (e.x1 - e.x0);
-  g.aspect_ok = std::fabs((a.y1 - a.y0) - s * (e.y1 - e.y0)) <= 3;
-  std::size_t found = 0;
-  for (int y = e.y0; y <= e.y1; ++y)
-    for (int x = e.x0; x <= e.x1; ++x)
-      if (e.at(x, y) && a.near(a.x0 + (x - e.x0) * s, a.y0 + (y - e.y0) * s, 2)) ++found;
-  g.expected_found = static_cast<double>(found) / e.count;
-  found = 0;
-  for (int y = a.y0; y <= a.y1; ++y)
-    for (int x = a.x0; x <= a.x1; ++x)
-      if (a.at(x, y) && e.near(e.x0 + (x - a.x0) / s, e.y0 + (y - a.y0) / s, 2)) ++found;
-  g.actual_found = static_cast<double>(found) / a.count;
-  return g;
 }
 
 // An asymmetric drawing inside the page's margins: a frame, an F, a circle, a spiral, a star, and a
@@ -192,7 +111,7 @@ class HpglHp2xx : public ::testing::Test {
                   const std::function<Point2(Point2)>& place, int w, int h) {
     const Ink actual = hp2xx_ink(to_hpgl(page, profile), dir_);
     const Ink expected = expected_ink(page, place, w, h);
-    return compare(expected, actual);
+    return compare_ink(expected, actual);
   }
   fs::path dir_;
 };
@@ -256,7 +175,7 @@ TEST_F(HpglHp2xx, ClippedDrawingMatchesTheClippedRaster) {
   cairo_destroy(cr);
   const Ink expected = ink_of(s);
   cairo_surface_destroy(s);
-  expect_agreement(compare(expected, actual));
+  expect_agreement(compare_ink(expected, actual));
 }
 
 }  // namespace
