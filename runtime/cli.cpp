@@ -84,10 +84,11 @@ void print_plan_stats(std::ostream& err, const OutputTarget& target,
                       const std::vector<WrittenFrame>& written) {
   for (const WrittenFrame& w : written) {
     const PlanStats& s = w.plan;
-    char line[400];
+    char line[640];
     std::snprintf(
         line, sizeof line,
-        "frame %d -> %s: %zu visible pieces, %zu after merging; pen-down %.1f mm, pen-up %.1f mm "
+        "frame %d -> %s: %zu visible pieces (%zu drawing-graph edges after snapping, merging, splitting); "
+        "pen-down %.1f mm, pen-up %.1f mm "
         "(mean %.1f, median %.1f), %zu lifts (lower bound %zu), plotting ~%.1f s, planned in %.2f ms\n",
         w.frame, target.path.filename().string().c_str(), w.visible_segments, s.merged_pieces, s.pen_down_mm,
         s.pen_up_mm, s.pen_up_mean_mm, s.pen_up_median_mm, s.lifts, s.lift_lower_bound, s.plot_seconds,
