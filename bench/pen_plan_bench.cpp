@@ -3,12 +3,11 @@
 // median CPU time of three renders is `render_cpu_ms`) and its visible pieces laid out on an A4 page
 // (home at the page's top-left corner); then only the planner is timed. Counters: pieces, merged (graph
 // edges), lifts, lower_bound (Σ max(1, odd/2)), pen_up_mm, pen_down_mm, plan_ms (the planner's own
-// wall clock) and plan_cpu_ms (process CPU time), both means over the iterations, render_cpu_ms,
-// plan_per_render (plan_cpu_ms / render_cpu_ms), and for Optimized vs_greedy (its pen-up over Greedy's)
-// and budget_hit. See bench/README.md.
+// wall clock) and plan_cpu_ms (process CPU time; with PlanOptions::threads = 2, both threads), both means
+// over the iterations, render_cpu_ms, plan_per_render (plan_cpu_ms / render_cpu_ms), and for Optimized
+// vs_greedy (its pen-up over Greedy's) and budget_hit. See bench/README.md.
 //   pen_plan_bench --benchmark_filter='City/100000'
 #include <benchmark/benchmark.h>
-
 #include <time.h>
 
 #include <algorithm>
@@ -27,7 +26,7 @@
 namespace {
 
 // Process CPU time in ms: on a shared machine it counts only this process's work (the engine runs one
-// thread here, the planner is single-threaded).
+// thread here, the planner one unless PlanOptions::threads says otherwise).
 double cpu_ms() {
   timespec ts{};
   clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
@@ -66,10 +65,11 @@ const PlanInput& input(const std::string& kind, std::size_t faces) {
   return *cache.emplace(key, std::move(in)).first->second;
 }
 
-void plan(benchmark::State& state, const char* kind, hlr::PenOrder order) {
+void plan(benchmark::State& state, const char* kind, hlr::PenOrder order, int threads = 1) {
   PlanInput& in = const_cast<PlanInput&>(input(kind, static_cast<std::size_t>(state.range(0))));
   hlr::PlanOptions options;
   options.order = order;
+  options.threads = threads;
   hlr::PenPlan result;
   double planning_ms = 0, planning_cpu_ms = 0;
   for (auto _ : state) {
@@ -108,6 +108,8 @@ void plan(benchmark::State& state, const char* kind, hlr::PenOrder order) {
 void BM_CityNone(benchmark::State& s) { plan(s, "city", hlr::PenOrder::None); }
 void BM_CityGreedy(benchmark::State& s) { plan(s, "city", hlr::PenOrder::Greedy); }
 void BM_CityOptimized(benchmark::State& s) { plan(s, "city", hlr::PenOrder::Optimized); }
+// PlanOptions::threads = 2: the greedy comparison plan on a second thread (compare plan_ms, wall clock).
+void BM_CityOptimizedThreads2(benchmark::State& s) { plan(s, "city", hlr::PenOrder::Optimized, 2); }
 void BM_SphereNone(benchmark::State& s) { plan(s, "sphere", hlr::PenOrder::None); }
 void BM_SphereGreedy(benchmark::State& s) { plan(s, "sphere", hlr::PenOrder::Greedy); }
 void BM_SphereOptimized(benchmark::State& s) { plan(s, "sphere", hlr::PenOrder::Optimized); }
@@ -119,10 +121,11 @@ void BM_TorusGreedy(benchmark::State& s) { plan(s, "torus", hlr::PenOrder::Greed
 void BM_TorusOptimized(benchmark::State& s) { plan(s, "torus", hlr::PenOrder::Optimized); }
 
 // Sizes are approximate face counts: city 100 … 100000 gives ≈ 130 … 110 000 pieces.
-#define PLAN_BENCH(fn, ...) BENCHMARK(fn)__VA_ARGS__->Unit(benchmark::kMillisecond)->UseRealTime()
+#define PLAN_BENCH(fn, ...) BENCHMARK(fn) __VA_ARGS__->Unit(benchmark::kMillisecond)->UseRealTime()
 PLAN_BENCH(BM_CityNone, ->Arg(100)->Arg(1000)->Arg(10000)->Arg(100000));
 PLAN_BENCH(BM_CityGreedy, ->Arg(100)->Arg(1000)->Arg(10000)->Arg(100000));
 PLAN_BENCH(BM_CityOptimized, ->Arg(100)->Arg(1000)->Arg(10000)->Arg(100000));
+PLAN_BENCH(BM_CityOptimizedThreads2, ->Arg(10000)->Arg(100000));
 PLAN_BENCH(BM_SphereNone, ->Arg(100)->Arg(10000)->Arg(100000));
 PLAN_BENCH(BM_SphereGreedy, ->Arg(100)->Arg(10000)->Arg(100000));
 PLAN_BENCH(BM_SphereOptimized, ->Arg(100)->Arg(10000)->Arg(100000));

@@ -49,6 +49,7 @@ std::vector<GridStroke> euler_strokes(const PenGraph& g, const std::vector<Verte
   }
 
   std::vector<GridStroke> strokes;
+  strokes.reserve(pairs.size() + g.components);
   std::vector<char> used(nt, 0);
   std::vector<std::uint32_t> next(offset.begin(), offset.end() - 1);
   constexpr std::uint32_t kNone = ~0u;
@@ -92,21 +93,24 @@ std::vector<GridStroke> euler_strokes(const PenGraph& g, const std::vector<Verte
       strokes.push_back(std::move(s));
       continue;
     }
-    // Cut at the virtual edges, starting just after the first one and wrapping around.
-    GridStroke s;
-    s.circuit = circuit_id;
-    s.vertices.push_back(vertex_at(first_virtual));
-    for (std::size_t j = 1; j <= m; ++j) {
-      const std::size_t k = (first_virtual + j - 1) % m + 1;  // edge index, 1..m
-      if (edge_at(k) >= ne) {
-        assert(s.vertices.size() >= 2);
-        strokes.push_back(std::move(s));
-        s = GridStroke{};
-        s.circuit = circuit_id;
+    // Cut at the virtual edges: each stroke runs from the vertex a virtual edge reaches to the vertex before
+    // the next virtual edge (edge indices 1..m, wrapping around), sized before it is filled.
+    std::size_t kv = first_virtual;
+    do {
+      std::size_t k = kv, len = 1;
+      for (;;) {
+        k = k == m ? 1 : k + 1;
+        if (edge_at(k) >= ne) break;
+        ++len;
       }
-      s.vertices.push_back(vertex_at(k));
-    }
-    // The last edge walked is the first virtual edge again, so the final stroke was pushed inside the loop.
+      assert(len >= 2);
+      GridStroke s;
+      s.circuit = circuit_id;
+      s.vertices.resize(len);
+      for (std::size_t t = 0, q = kv; t < len; ++t, q = q == m ? 1 : q + 1) s.vertices[t] = vertex_at(q);
+      strokes.push_back(std::move(s));
+      kv = k;
+    } while (kv != first_virtual);
   }
   return strokes;
 }

@@ -18,7 +18,8 @@ namespace hlr::plan {
 struct GridStroke {
   std::vector<std::uint32_t> vertices;
   bool closed = false;
-  std::uint32_t circuit = 0;  // euler_strokes(): the augmented circuit it was cut from (strokes in circuit order)
+  // euler_strokes(): the augmented circuit it was cut from (strokes in circuit order).
+  std::uint32_t circuit = 0;
 };
 
 using VertexPair = std::pair<std::uint32_t, std::uint32_t>;

@@ -48,10 +48,13 @@ KdTree::KdTree(const std::vector<Pt>& points) {
     }
     const bool by_y = (ymax - ymin) > (xmax - xmin);
     const std::uint32_t mid = lo + (hi - lo) / 2;
-    std::nth_element(items.begin() + lo, items.begin() + mid, items.begin() + hi, [by_y](const Item& a, const Item& b) {
-      const double ka = by_y ? a.p.y : a.p.x, kb = by_y ? b.p.y : b.p.x;
-      return ka != kb ? ka < kb : a.index < b.index;
-    });
+    // The split need not break ties (queries break them by index; nth_element itself is deterministic).
+    if (by_y)
+      std::nth_element(items.begin() + lo, items.begin() + mid, items.begin() + hi,
+                       [](const Item& a, const Item& b) { return a.p.y < b.p.y; });
+    else
+      std::nth_element(items.begin() + lo, items.begin() + mid, items.begin() + hi,
+                       [](const Item& a, const Item& b) { return a.p.x < b.p.x; });
     const std::uint32_t l = static_cast<std::uint32_t>(nodes_.size());
     nodes_.push_back(Node{0, 0, 0, 0, lo, mid, kNone, kNone, id, mid - lo});
     nodes_.push_back(Node{0, 0, 0, 0, mid, hi, kNone, kNone, id, hi - mid});
@@ -99,8 +102,48 @@ std::uint32_t KdTree::nearest(Pt q) const {
     }
     const double dl = box_dist2(nodes_[n.left], q), dr = box_dist2(nodes_[n.right], q);
     // Nearer child on top, so it is searched first.
-    if (dl <= dr) stack[top++] = {dr, n.right}, stack[top++] = {dl, n.left};
-    else stack[top++] = {dl, n.left}, stack[top++] = {dr, n.right};
+    if (dl <= dr)
+      stack[top++] = {dr, n.right}, stack[top++] = {dl, n.left};
+    else
+      stack[top++] = {dl, n.left}, stack[top++] = {dr, n.right};
+  }
+  return best_index;
+}
+
+std::uint32_t KdTree::nearest(Pt q, std::uint32_t near_index) const {
+  if (nodes_.empty() || !nodes_[0].alive || near_index >= position_.size()) return nearest(q);
+  double best = std::numeric_limits<double>::infinity();
+  std::uint32_t best_index = kNone;
+  Scored stack[96];
+  // The leaf of near_index, then the sibling subtree of every node on the way up: the whole tree once.
+  for (std::uint32_t from = kNone, id = leaf_[position_[near_index]]; id != kNone;
+       from = id, id = nodes_[id].parent) {
+    int top = 0;
+    if (from == kNone)
+      stack[top++] = {box_dist2(nodes_[id], q), id};
+    else {
+      const std::uint32_t sibling = nodes_[id].left == from ? nodes_[id].right : nodes_[id].left;
+      stack[top++] = {box_dist2(nodes_[sibling], q), sibling};
+    }
+    while (top) {
+      const auto [bound, nid] = stack[--top];
+      if (bound > best) continue;
+      const Node& n = nodes_[nid];
+      if (!n.alive) continue;
+      if (n.left == kNone) {
+        for (std::uint32_t i = n.lo; i < n.hi; ++i) {
+          if (!alive_[i]) continue;
+          const double d = dist2(q, points_[i]);
+          if (d < best || (d == best && index_[i] < best_index)) best = d, best_index = index_[i];
+        }
+        continue;
+      }
+      const double dl = box_dist2(nodes_[n.left], q), dr = box_dist2(nodes_[n.right], q);
+      if (dl <= dr)
+        stack[top++] = {dr, n.right}, stack[top++] = {dl, n.left};
+      else
+        stack[top++] = {dl, n.left}, stack[top++] = {dr, n.right};
+    }
   }
   return best_index;
 }
@@ -133,13 +176,16 @@ void KdTree::k_nearest(Pt q, std::size_t k, std::uint32_t exclude, std::vector<s
       continue;
     }
     const double dl = box_dist2(nodes_[n.left], q), dr = box_dist2(nodes_[n.right], q);
-    if (dl <= dr) stack[top++] = {dr, n.right}, stack[top++] = {dl, n.left};
-    else stack[top++] = {dl, n.left}, stack[top++] = {dr, n.right};
+    if (dl <= dr)
+      stack[top++] = {dr, n.right}, stack[top++] = {dl, n.left};
+    else
+      stack[top++] = {dl, n.left}, stack[top++] = {dr, n.right};
   }
   for (std::size_t i = 0; i < have; ++i) out.push_back(best[i].i);
 }
 
-void all_k_nearest(const std::vector<Pt>& points, std::size_t k, std::vector<std::uint32_t>& out, bool exact) {
+void all_k_nearest(const std::vector<Pt>& points, std::size_t k, std::vector<std::uint32_t>& out,
+                   bool exact) {
   constexpr std::uint32_t kNone = KdTree::kNone;
   const std::size_t n = points.size();
   k = std::min<std::size_t>(k, 64);
@@ -151,15 +197,19 @@ void all_k_nearest(const std::vector<Pt>& points, std::size_t k, std::vector<std
     ymin = std::min(ymin, p.y), ymax = std::max(ymax, p.y);
   }
   const double w = std::max(xmax - xmin, 1e-9), h = std::max(ymax - ymin, 1e-9);
-  double cell = std::sqrt(std::max(w, h / 1e6) * std::max(h, w / 1e6) / static_cast<double>(n));
+  double cell = std::sqrt(0.5 * std::max(w, h / 1e6) * std::max(h, w / 1e6) / static_cast<double>(n));
   std::int64_t nx, ny;
   for (;;) {
     nx = static_cast<std::int64_t>(w / cell) + 1, ny = static_cast<std::int64_t>(h / cell) + 1;
     if (static_cast<double>(nx) * static_cast<double>(ny) <= 4.0 * static_cast<double>(n) + 4096) break;
     cell *= 1.5;
   }
-  auto cx_of = [&](double x) { return std::clamp<std::int64_t>(static_cast<std::int64_t>((x - xmin) / cell), 0, nx - 1); };
-  auto cy_of = [&](double y) { return std::clamp<std::int64_t>(static_cast<std::int64_t>((y - ymin) / cell), 0, ny - 1); };
+  auto cx_of = [&](double x) {
+    return std::clamp<std::int64_t>(static_cast<std::int64_t>((x - xmin) / cell), 0, nx - 1);
+  };
+  auto cy_of = [&](double y) {
+    return std::clamp<std::int64_t>(static_cast<std::int64_t>((y - ymin) / cell), 0, ny - 1);
+  };
   std::vector<std::uint32_t> start(static_cast<std::size_t>(nx * ny) + 1, 0), cell_of(n);
   for (std::size_t i = 0; i < n; ++i) {
     cell_of[i] = static_cast<std::uint32_t>(cy_of(points[i].y) * nx + cx_of(points[i].x));

@@ -22,7 +22,7 @@ inline double dist2(Pt a, Pt b) {
 class KdTree {
  public:
   static constexpr std::uint32_t kNone = ~0u;
-  static constexpr std::uint32_t kLeafSize = 8;
+  static constexpr std::uint32_t kLeafSize = 32;
 
   explicit KdTree(const std::vector<Pt>& points);
 
@@ -33,14 +33,17 @@ class KdTree {
   void erase(std::uint32_t index);
   // The live point nearest to q (lowest index among equals), or kNone when none is left.
   std::uint32_t nearest(Pt q) const;
+  // The same answer, searched bottom-up from the leaf of point `near_index` (live or not; any index is
+  // valid): cheaper when that point is close to q (greedy chains of queries).
+  std::uint32_t nearest(Pt q, std::uint32_t near_index) const;
   // Up to k live points nearest to q, nearest first (ties by index), skipping `exclude`; `out` is cleared.
   void k_nearest(Pt q, std::size_t k, std::uint32_t exclude, std::vector<std::uint32_t>& out) const;
 
  private:
   struct Node {
     double xmin, ymin, xmax, ymax;
-    std::uint32_t lo, hi;         // its points: positions [lo, hi) in tree order
-    std::uint32_t left, right;    // children (kNone for a leaf)
+    std::uint32_t lo, hi;       // its points: positions [lo, hi) in tree order
+    std::uint32_t left, right;  // children (kNone for a leaf)
     std::uint32_t parent;
     std::uint32_t alive;
   };
@@ -59,13 +62,14 @@ class KdTree {
 };
 
 // For every point, up to k nearest other points (nearest first, ties by index) into
-// out[i·k … i·k + k), padded with KdTree::kNone. A uniform grid of about one point per cell answers most
+// out[i·k … i·k + k), padded with KdTree::kNone. A uniform grid of about two cells per point answers most
 // queries from the cells within a few rings around the point; a point in a crowded
 // neighbourhood, or whose k-th neighbour lies beyond a few rings, asks a k-d tree. Same result as
 // KdTree::k_nearest for every point.
 // With `exact` false the search stops as soon as k points are found in the rings 0…r around the point's
 // cell (r ≥ 1): nearly always the true k nearest, occasionally a slightly farther one — candidate lists
 // for heuristics, at about half the cost.
-void all_k_nearest(const std::vector<Pt>& points, std::size_t k, std::vector<std::uint32_t>& out, bool exact = true);
+void all_k_nearest(const std::vector<Pt>& points, std::size_t k, std::vector<std::uint32_t>& out,
+                   bool exact = true);
 
 }  // namespace hlr::plan

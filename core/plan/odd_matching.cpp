@@ -53,10 +53,10 @@ Pairs exact_matching(const std::vector<Pt>& p) {
   return out;
 }
 
-Pairs heuristic_matching(const std::vector<Pt>& p) {
+Pairs heuristic_matching(const std::vector<Pt>& p, std::vector<std::uint32_t>* neighbours) {
   const std::uint32_t n = static_cast<std::uint32_t>(p.size());
   constexpr std::uint32_t kNone = ~0u;
-  constexpr std::size_t kNeighbours = 6;
+  constexpr std::size_t kNeighbours = kMatchingNeighbours;
   std::vector<std::uint32_t> mate(n, kNone);
   // Neighbour lists (also used by the improvement pass).
   std::vector<std::uint32_t> nbr;
@@ -80,7 +80,18 @@ Pairs heuristic_matching(const std::vector<Pt>& p) {
     const float d = static_cast<float>(dist(p[pairs[c].first], p[pairs[c].second]));
     keys[c] = (static_cast<std::uint64_t>(std::bit_cast<std::uint32_t>(d)) << 32) | c;
   }
-  std::sort(keys.begin(), keys.end());
+  // Keys come in increasing candidate number, so a stable radix sort on the length bits alone (two
+  // 16-bit passes) gives the same order as sorting the whole keys.
+  {
+    std::vector<std::uint64_t> tmp(keys.size());
+    for (int shift = 32; shift < 64; shift += 16) {
+      std::vector<std::uint32_t> count(65537, 0);
+      for (std::uint64_t k : keys) ++count[((k >> shift) & 0xffffu) + 1];
+      for (std::size_t b = 1; b < count.size(); ++b) count[b] += count[b - 1];
+      for (std::uint64_t k : keys) tmp[count[(k >> shift) & 0xffffu]++] = k;
+      keys.swap(tmp);
+    }
+  }
   for (std::uint64_t key : keys) {
     const auto [a, b] = pairs[key & 0xffffffffu];
     if (mate[a] == kNone && mate[b] == kNone) {
@@ -136,16 +147,18 @@ Pairs heuristic_matching(const std::vector<Pt>& p) {
   out.reserve(n / 2);
   for (std::uint32_t i = 0; i < n; ++i)
     if (i < mate[i]) out.emplace_back(i, mate[i]);
+  if (neighbours) neighbours->swap(nbr);
   return out;
 }
 
 }  // namespace
 
-Pairs min_weight_matching(const std::vector<Pt>& points) {
+Pairs min_weight_matching(const std::vector<Pt>& points, std::vector<std::uint32_t>* neighbours) {
+  if (neighbours) neighbours->clear();
   if (points.size() % 2) throw std::invalid_argument("min_weight_matching: odd point count");
   if (points.empty()) return {};
   if (points.size() <= kExactMatchingLimit) return exact_matching(points);
-  return heuristic_matching(points);
+  return heuristic_matching(points, neighbours);
 }
 
 double exact_matching_weight(const std::vector<Pt>& points) {

@@ -1,15 +1,19 @@
 #include "core/plan/pen_graph.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <numeric>
-
-#include "core/plan/flat_index.hpp"
 
 namespace hlr::plan {
 namespace {
 
-std::int64_t floor_div(double x, double s) { return static_cast<std::int64_t>(std::floor(x / s)); }
+// floor(x / s) without a library call (|x / s| stays far below 2^63 here).
+std::int64_t floor_div(double x, double s) {
+  const double q = x / s;
+  const auto i = static_cast<std::int64_t>(q);
+  return i - (q < static_cast<double>(i) ? 1 : 0);
+}
 
 // A vertex lying on a segment: its parameter along the segment (dot product) and its number.
 struct Split {
@@ -63,23 +67,56 @@ PenGraph build_pen_graph(std::span<const GridSegment> segments, double tolerance
   PenGraph g;
   tolerance = std::isfinite(tolerance) ? std::max(0.0, tolerance) : 0.0;
 
-  // 1. Vertices: one per distinct snapped end point.
-  FlatIndex vertex_index(segments.size() + 16);
-  std::vector<GraphEdge> pieces;  // (u, v) in piece order, unordered
-  pieces.reserve(segments.size());
-  auto vertex = [&](GridPoint p) {
-    const auto [id, inserted] =
-        vertex_index.insert(pack_point_key(p.x, p.y), static_cast<std::uint32_t>(g.vertices.size()));
-    if (inserted) g.vertices.push_back(p);
-    return id;
-  };
+  // 1. Vertices: one per distinct snapped end point, numbered in order of first appearance. The end points
+  //    are radix-sorted by packed coordinates (stable, so each run of equal points starts at its first
+  //    occurrence), then numbered in a pass over the occurrences.
+  std::vector<GridPoint> ends;  // a, b of every kept piece
+  ends.reserve(2 * segments.size());
   for (const GridSegment& s : segments) {
     if (s.a == s.b) continue;
     if (std::max({std::llabs(s.a.x), std::llabs(s.a.y), std::llabs(s.b.x), std::llabs(s.b.y)}) >
         kMaxGridCoordinate)
       continue;
-    const std::uint32_t u = vertex(s.a), v = vertex(s.b);
-    pieces.push_back({u, v});
+    ends.push_back(s.a), ends.push_back(s.b);
+  }
+  std::vector<GraphEdge> pieces(ends.size() / 2);  // (u, v) in piece order, unordered
+  if (!ends.empty()) {
+    std::int64_t x0 = ends[0].x, x1 = x0, y0 = ends[0].y, y1 = y0;
+    for (const GridPoint& p : ends) {
+      x0 = std::min(x0, p.x), x1 = std::max(x1, p.x);
+      y0 = std::min(y0, p.y), y1 = std::max(y1, p.y);
+    }
+    const int ybits = static_cast<int>(std::bit_width(static_cast<std::uint64_t>(y1 - y0)));
+    const int bits = ybits + static_cast<int>(std::bit_width(static_cast<std::uint64_t>(x1 - x0)));
+    struct Keyed {
+      std::uint64_t key;
+      std::uint32_t occurrence;
+    };
+    std::vector<Keyed> keyed(ends.size()), tmp(ends.size());
+    for (std::size_t i = 0; i < ends.size(); ++i)
+      keyed[i] = {
+          (static_cast<std::uint64_t>(ends[i].x - x0) << ybits) | static_cast<std::uint64_t>(ends[i].y - y0),
+          static_cast<std::uint32_t>(i)};
+    std::vector<std::uint32_t> count(65537);
+    for (int shift = 0; shift < bits; shift += 16) {
+      std::fill(count.begin(), count.end(), 0u);
+      for (const Keyed& k : keyed) ++count[((k.key >> shift) & 0xffffu) + 1];
+      for (std::size_t b = 1; b < count.size(); ++b) count[b] += count[b - 1];
+      for (const Keyed& k : keyed) tmp[count[(k.key >> shift) & 0xffffu]++] = k;
+      keyed.swap(tmp);
+    }
+    constexpr std::uint32_t kUnset = ~0u;
+    std::vector<std::uint32_t> first(ends.size()), id(ends.size(), kUnset);  // per occurrence
+    for (std::size_t i = 0; i < keyed.size(); ++i)
+      first[keyed[i].occurrence] =
+          i > 0 && keyed[i].key == keyed[i - 1].key ? first[keyed[i - 1].occurrence] : keyed[i].occurrence;
+    for (std::size_t i = 0; i < ends.size(); ++i) {
+      if (first[i] == i) {
+        id[i] = static_cast<std::uint32_t>(g.vertices.size());
+        g.vertices.push_back(ends[i]);
+      }
+      (i % 2 ? pieces[i / 2].v : pieces[i / 2].u) = id[first[i]];
+    }
   }
   const std::size_t nv = g.vertices.size();
   std::vector<std::uint32_t> raw_degree(nv, 0);  // pieces ending at each vertex
@@ -97,12 +134,15 @@ PenGraph build_pen_graph(std::span<const GridSegment> segments, double tolerance
     ymin = std::min(ymin, p.y), ymax = std::max(ymax, p.y);
   }
   const double width = static_cast<double>(xmax - xmin), height = static_cast<double>(ymax - ymin);
-  double cell = std::max({2.0, 2 * tolerance + 1,
-                          std::sqrt(2 * std::max(width, 1.0) * std::max(height, 1.0) / static_cast<double>(nv))});
+  double cell =
+      std::max({2.0, 2 * tolerance + 1,
+                std::sqrt(2 * std::max(width, 1.0) * std::max(height, 1.0) / static_cast<double>(nv))});
   std::int64_t cx0, cy0, nx, ny;
   for (;;) {
-    cx0 = floor_div(static_cast<double>(xmin), cell) - 1, cy0 = floor_div(static_cast<double>(ymin), cell) - 1;
-    nx = floor_div(static_cast<double>(xmax), cell) - cx0 + 2, ny = floor_div(static_cast<double>(ymax), cell) - cy0 + 2;
+    cx0 = floor_div(static_cast<double>(xmin), cell) - 1,
+    cy0 = floor_div(static_cast<double>(ymin), cell) - 1;
+    nx = floor_div(static_cast<double>(xmax), cell) - cx0 + 2,
+    ny = floor_div(static_cast<double>(ymax), cell) - cy0 + 2;
     if (static_cast<double>(nx) * static_cast<double>(ny) <= 4.0 * static_cast<double>(nv) + 4096) break;
     cell *= 1.5;
   }
@@ -113,8 +153,9 @@ PenGraph build_pen_graph(std::span<const GridSegment> segments, double tolerance
   std::vector<std::uint32_t> cell_start(static_cast<std::size_t>(nx * ny) + 1, 0);
   std::vector<std::uint32_t> vertex_cell(nv);
   for (std::uint32_t v = 0; v < nv; ++v) {
-    vertex_cell[v] = static_cast<std::uint32_t>(cell_of(floor_div(static_cast<double>(g.vertices[v].x), cell),
-                                                        floor_div(static_cast<double>(g.vertices[v].y), cell)));
+    vertex_cell[v] =
+        static_cast<std::uint32_t>(cell_of(floor_div(static_cast<double>(g.vertices[v].x), cell),
+                                           floor_div(static_cast<double>(g.vertices[v].y), cell)));
     ++cell_start[vertex_cell[v] + 1];
   }
   for (std::size_t c = 1; c < cell_start.size(); ++c) cell_start[c] += cell_start[c - 1];
@@ -147,24 +188,28 @@ PenGraph build_pen_graph(std::span<const GridSegment> segments, double tolerance
     auto test_cell = [&](std::int64_t cx, std::int64_t cy) {
       const std::int64_t c = cell_of(cx, cy);
       if (c < 0) return;
-      for (std::uint32_t i = cell_start[static_cast<std::size_t>(c)], e = cell_start[static_cast<std::size_t>(c) + 1]; i < e; ++i) {
+      for (std::uint32_t i = cell_start[static_cast<std::size_t>(c)],
+                         e = cell_start[static_cast<std::size_t>(c) + 1];
+           i < e; ++i) {
         const GridPoint pw = cell_point[i];
         const std::int64_t wx = pw.x - pa.x, wy = pw.y - pa.y;
         const std::int64_t t = wx * dx + wy * dy;
         if (t <= 0 || t >= len2) continue;  // also skips the piece's own end points
         const std::int64_t cross = dx * wy - dy * wx;
         if (cross != 0) {
-          if (raw_degree[cell_vertex[i]] != 1) continue;  // the tolerance is for loose ends only
           const double cr = static_cast<double>(cross);
           if (cr * cr > tol2 * static_cast<double>(len2)) continue;
+          if (raw_degree[cell_vertex[i]] != 1) continue;  // the tolerance is for loose ends only
         }
         splits.push_back({t, cell_vertex[i]});
       }
     };
     // Walk the cells within `tolerance` of the piece, one cell column (or row) of the major axis at a time.
     const bool x_major = std::llabs(dx) >= std::llabs(dy);
-    const double a0 = static_cast<double>(x_major ? pa.x : pa.y), a1 = static_cast<double>(x_major ? pb.x : pb.y);
-    const double b0 = static_cast<double>(x_major ? pa.y : pa.x), b1 = static_cast<double>(x_major ? pb.y : pb.x);
+    const double a0 = static_cast<double>(x_major ? pa.x : pa.y),
+                 a1 = static_cast<double>(x_major ? pb.x : pb.y);
+    const double b0 = static_cast<double>(x_major ? pa.y : pa.x),
+                 b1 = static_cast<double>(x_major ? pb.y : pb.x);
     const double lo = std::min(a0, a1), hi = std::max(a0, a1);
     const double slope = (b1 - b0) / (a1 - a0);  // |slope| ≤ 1; a1 ≠ a0 on the major axis
     const std::int64_t c_first = floor_div(lo - tolerance, cell), c_last = floor_div(hi + tolerance, cell);

@@ -37,12 +37,12 @@ struct GraphEdge {
 };
 
 struct PenGraph {
-  std::vector<GridPoint> vertices;  // numbered in order of first appearance in the pieces
-  std::vector<GraphEdge> edges;     // ordered by u, then first appearance; no duplicates, no loops
+  std::vector<GridPoint> vertices;       // numbered in order of first appearance in the pieces
+  std::vector<GraphEdge> edges;          // ordered by u, then first appearance; no duplicates, no loops
   std::vector<std::uint32_t> degree;     // per vertex
   std::vector<std::uint32_t> component;  // per vertex; components numbered by their lowest vertex
   std::size_t components = 0;
-  std::vector<std::uint32_t> odd;  // odd-degree vertices, increasing
+  std::vector<std::uint32_t> odd;            // odd-degree vertices, increasing
   std::vector<std::uint32_t> component_odd;  // per component: how many odd vertices
   std::size_t lift_lower_bound = 0;          // Σ over components of max(1, odd / 2)
 };

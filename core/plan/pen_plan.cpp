@@ -3,8 +3,10 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <exception>
 #include <map>
 #include <stdexcept>
+#include <thread>
 #include <utility>
 
 #include "core/plan/euler_strokes.hpp"
@@ -70,13 +72,15 @@ struct Sequence {
   bool deadline_hit = false;
 };
 
-std::vector<plan::VertexPair> matched_pairing(const PenGraph& g) {
+// `neighbours`: the matching's neighbour lists over g.odd, reused by improve_order().
+std::vector<plan::VertexPair> matched_pairing(const PenGraph& g, std::vector<std::uint32_t>& neighbours) {
   std::vector<Pt> points;
   points.reserve(g.odd.size());
   for (std::uint32_t v : g.odd)
     points.push_back({static_cast<double>(g.vertices[v].x), static_cast<double>(g.vertices[v].y)});
   std::vector<plan::VertexPair> pairs;
-  for (const auto& [i, j] : plan::min_weight_matching(points)) pairs.emplace_back(g.odd[i], g.odd[j]);
+  for (const auto& [i, j] : plan::min_weight_matching(points, &neighbours))
+    pairs.emplace_back(g.odd[i], g.odd[j]);
   return pairs;
 }
 
@@ -88,7 +92,9 @@ Sequence plan_sequence(const std::vector<Group>& groups, Pt home, bool optimize,
     const PenGraph& g = groups[gi].graph;
     const TourEnds ends{here, home, gi + 1 < groups.size()};
     GroupStrokes gs;
-    gs.strokes = plan::euler_strokes(g, optimize ? matched_pairing(g) : plan::sequential_pairing(g));
+    std::vector<std::uint32_t> neighbours;
+    gs.strokes =
+        plan::euler_strokes(g, optimize ? matched_pairing(g, neighbours) : plan::sequential_pairing(g));
     if (!optimize) {
       plan::order_greedy(gs.strokes, g.vertices, ends);
     } else if (plan::order_exact(gs.strokes, g.vertices, ends)) {
@@ -100,7 +106,9 @@ Sequence plan_sequence(const std::vector<Group>& groups, Pt home, bool optimize,
     } else {
       plan::order_circuits(gs.strokes, g.vertices, ends);
       const Clock::time_point started = Clock::now();
-      const plan::ImproveResult r = plan::improve_order(gs.strokes, g.vertices, ends, started + budget);
+      const plan::SharedNeighbours shared{&g.odd, &neighbours, plan::kMatchingNeighbours};
+      const plan::ImproveResult r =
+          plan::improve_order(gs.strokes, g.vertices, ends, started + budget, 500, &shared);
       budget -= std::min(budget, Clock::now() - started);
       out.moves += r.moves;
       out.deadline_hit = out.deadline_hit || r.deadline_hit;
@@ -115,10 +123,13 @@ Sequence plan_sequence(const std::vector<Group>& groups, Pt home, bool optimize,
   return out;
 }
 
-Point2 to_mm(GridPoint p, double grid) { return {static_cast<double>(p.x) * grid, static_cast<double>(p.y) * grid}; }
+Point2 to_mm(GridPoint p, double grid) {
+  return {static_cast<double>(p.x) * grid, static_cast<double>(p.y) * grid};
+}
 
 // Graph strokes → page strokes, dropping middle points where the path goes straight on exactly.
-void emit_strokes(const std::vector<Group>& groups, const Sequence& seq, double grid, std::vector<PlotStroke>& out) {
+void emit_strokes(const std::vector<Group>& groups, const Sequence& seq, double grid,
+                  std::vector<PlotStroke>& out) {
   for (std::size_t gi = 0; gi < groups.size(); ++gi) {
     const std::vector<GridPoint>& v = groups[gi].graph.vertices;
     for (const GridStroke& s : seq.groups[gi].strokes) {
@@ -164,7 +175,8 @@ void fill_travel_stats(const std::vector<PlotStroke>& strokes, const PlanOptions
   st.lifts = strokes.size();
   st.pen_down_mm = 0;
   for (const PlotStroke& s : strokes)
-    for (std::size_t k = 1; k < s.points.size(); ++k) st.pen_down_mm += distance(s.points[k - 1], s.points[k]);
+    for (std::size_t k = 1; k < s.points.size(); ++k)
+      st.pen_down_mm += distance(s.points[k - 1], s.points[k]);
   st.pen_up_mm = st.pen_up_mean_mm = st.pen_up_median_mm = 0;
   if (!strokes.empty()) {
     std::vector<double> moves;
@@ -177,9 +189,13 @@ void fill_travel_stats(const std::vector<PlotStroke>& strokes, const PlanOptions
     moves.push_back(distance(here, o.home));
     for (double m : moves) st.pen_up_mm += m;
     st.pen_up_mean_mm = st.pen_up_mm / static_cast<double>(moves.size());
-    std::sort(moves.begin(), moves.end());
-    const std::size_t h = moves.size() / 2;
-    st.pen_up_median_mm = moves.size() % 2 ? moves[h] : 0.5 * (moves[h - 1] + moves[h]);
+    const std::size_t h = moves.size() / 2;  // the median by selection: moves[h] and the largest below it
+    std::nth_element(moves.begin(), moves.begin() + static_cast<std::ptrdiff_t>(h), moves.end());
+    st.pen_up_median_mm =
+        moves.size() % 2
+            ? moves[h]
+            : 0.5 * (*std::max_element(moves.begin(), moves.begin() + static_cast<std::ptrdiff_t>(h)) +
+                     moves[h]);
   }
   st.plot_seconds = st.pen_down_mm / o.speeds.pen_down_mm_per_s + st.pen_up_mm / o.speeds.pen_up_mm_per_s +
                     static_cast<double>(st.lifts) * o.speeds.lift_s;
@@ -190,7 +206,8 @@ void fill_travel_stats(const std::vector<PlotStroke>& strokes, const PlanOptions
 PenPlan plan_pen_strokes(const std::vector<PlotPiece>& pieces, const PlanOptions& options) {
   const Clock::time_point t0 = Clock::now();
   const double grid = options.grid_mm;
-  if (!std::isfinite(grid) || !(grid > 0)) throw std::invalid_argument("plan_pen_strokes: grid_mm must be positive");
+  if (!std::isfinite(grid) || !(grid > 0))
+    throw std::invalid_argument("plan_pen_strokes: grid_mm must be positive");
   PenPlan plan;
   PlanStats& st = plan.stats;
   st.pieces = pieces.size();
@@ -207,15 +224,42 @@ PenPlan plan_pen_strokes(const std::vector<PlotPiece>& pieces, const PlanOptions
     file_order_strokes(groups, grid, plan.strokes);
   } else {
     // The budget bounds the improvement passes only (PlanOptions::time_budget_ms); at most a day.
-    const double budget_ms = std::isnan(options.time_budget_ms) ? 0.0 : std::clamp(options.time_budget_ms, 0.0, 864e5);
-    const auto budget = std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double, std::milli>(budget_ms));
-    Sequence chosen = plan_sequence(groups, home, false, budget);
+    const double budget_ms =
+        std::isnan(options.time_budget_ms) ? 0.0 : std::clamp(options.time_budget_ms, 0.0, 864e5);
+    const auto budget =
+        std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double, std::milli>(budget_ms));
+    Sequence chosen;
     if (options.order == PenOrder::Optimized) {
-      Sequence optimized = plan_sequence(groups, home, true, budget);
+      // The greedy plan, for the never-worse-than-Greedy guarantee: on a second thread when allowed.
+      std::exception_ptr failed;
+      std::thread greedy;
+      if (options.threads >= 2)
+        greedy = std::thread([&] {
+          try {
+            chosen = plan_sequence(groups, home, false, budget);
+          } catch (...) {
+            failed = std::current_exception();
+          }
+        });
+      else
+        chosen = plan_sequence(groups, home, false, budget);
+      Sequence optimized;
+      try {
+        optimized = plan_sequence(groups, home, true, budget);
+      } catch (...) {
+        if (greedy.joinable()) greedy.join();
+        throw;
+      }
+      if (greedy.joinable()) greedy.join();
+      if (failed) std::rethrow_exception(failed);
       st.improvement_moves = optimized.moves;
       st.budget_exhausted = optimized.deadline_hit;
-      if (optimized.travel <= chosen.travel) chosen = std::move(optimized);
-      else st.kept_greedy = true;
+      if (optimized.travel <= chosen.travel)
+        chosen = std::move(optimized);
+      else
+        st.kept_greedy = true;
+    } else {
+      chosen = plan_sequence(groups, home, false, budget);
     }
     emit_strokes(groups, chosen, grid, plan.strokes);
   }

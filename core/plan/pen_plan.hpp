@@ -37,8 +37,8 @@ struct PlotterSpeeds {
 
 struct PlanOptions {
   PenOrder order = PenOrder::Optimized;
-  double grid_mm = 0.025;     // endpoints snap to multiples of this (the device's plotter unit)
-  Point2 home{0, 0};          // the pen starts here and returns here (page mm)
+  double grid_mm = 0.025;       // endpoints snap to multiples of this (the device's plotter unit)
+  Point2 home{0, 0};            // the pen starts here and returns here (page mm)
   double time_budget_ms = 200;  // for the improvement passes of Optimized, per page
   PlotterSpeeds speeds;
   // A piece is split at (joined to) every vertex exactly on it between its end points, and at every loose
@@ -46,18 +46,21 @@ struct PlanOptions {
   // moved off the line they meet (by up to √2 units). 0 joins only vertices exactly on the snapped piece.
   // See core/plan/pen_graph.hpp.
   double merge_tolerance_grid = 1.5;
+  // Optimized: with 2 or more, the greedy plan it is compared with is built on a second thread while the
+  // optimized one is built. The result is the same for any value (both plans are always built in full).
+  int threads = 1;
 };
 
 struct PlanStats {
   std::size_t pieces = 0;         // pieces given
   std::size_t merged_pieces = 0;  // edges of the drawing graph after snapping and merging
   double pen_down_mm = 0;
-  double pen_up_mm = 0;  // home → first stroke, between strokes, last stroke → home
-  double pen_up_mean_mm = 0;    // over the pen-up moves (strokes + 1 of them; 0 when there is no stroke)
+  double pen_up_mm = 0;       // home → first stroke, between strokes, last stroke → home
+  double pen_up_mean_mm = 0;  // over the pen-up moves (strokes + 1 of them; 0 when there is no stroke)
   double pen_up_median_mm = 0;
-  std::size_t lifts = 0;        // strokes drawn
+  std::size_t lifts = 0;             // strokes drawn
   std::size_t lift_lower_bound = 0;  // sum over components of max(1, odd/2), per pen and layer
-  double plot_seconds = 0;      // pen_down/v_down + pen_up/v_up + lifts·lift_s
+  double plot_seconds = 0;           // pen_down/v_down + pen_up/v_up + lifts·lift_s
   double planning_ms = 0;
   std::size_t dropped_pieces = 0;  // zero length on the grid, not finite, or beyond ±2^29 grid units
   std::size_t components = 0;      // of the drawing graphs, summed over pens and layers

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <deque>
-#include <limits>
 
 namespace hlr::plan {
 namespace {
@@ -27,17 +26,21 @@ void rotate_closed(GridStroke& s, std::size_t k) {
   v.push_back(v.front());
 }
 
-// ---- improvement ----
-
 class TourImprover {
  public:
   TourImprover(std::vector<GridStroke>& strokes, const std::vector<GridPoint>& vertices, const TourEnds& ends,
-               std::chrono::steady_clock::time_point deadline, std::size_t work_cap)
-      : strokes_(strokes), vertices_(vertices), ends_(ends), deadline_(deadline), work_cap_(work_cap) {
+               std::chrono::steady_clock::time_point deadline, std::size_t work_cap,
+               const SharedNeighbours* shared)
+      : strokes_(strokes),
+        vertices_(vertices),
+        ends_(ends),
+        deadline_(deadline),
+        work_cap_(work_cap),
+        shared_(shared) {
     n_ = strokes.size();
     N_ = n_ + 1;
     // Neighbour-list length: 8, or longer for small tours where a wider search costs little.
-    K = N_ <= 64 ? 31 : (N_ <= 1024 ? 16 : 8);
+    K = N_ <= 64 ? 31 : (N_ <= 1024 ? 16 : (N_ <= 16384 ? 8 : 5));
     p0_.resize(N_);
     p1_.resize(N_);
     for (std::size_t s = 0; s < n_; ++s) set_ends(s);
@@ -52,8 +55,12 @@ class TourImprover {
   }
 
   ImproveResult run() {
+    // Neighbour lists built once; the second round starts from the re-entered closed strokes.
+    build_neighbours();
+    queued_.assign(N_, 0);
+    queue_.clear();
+    for (std::size_t i = 0; i < N_; ++i) touch(tour_[i]);
     for (int round = 0; round < 2; ++round) {
-      build_neighbours();
       local_search();
       const std::size_t rotated = reenter_closed();
       result_.moves += rotated;
@@ -64,7 +71,6 @@ class TourImprover {
   }
 
  private:
-
   void set_ends(std::size_t s) {
     p0_[s] = at(vertices_, strokes_[s].vertices.front());
     p1_[s] = at(vertices_, strokes_[s].vertices.back());
@@ -92,11 +98,53 @@ class TourImprover {
   bool stopped() {
     if (result_.work >= work_cap_) return true;
     if (result_.deadline_hit) return true;
-    if (clock_checks_++ % 64 == 0 && std::chrono::steady_clock::now() >= deadline_) result_.deadline_hit = true;
+    if (clock_checks_++ % 64 == 0 && std::chrono::steady_clock::now() >= deadline_)
+      result_.deadline_hit = true;
     return result_.deadline_hit;
   }
 
+  // The lists from `shared_` when they cover exactly the stroke end points (see improve_order()).
+  bool neighbours_from_shared() {
+    if (!shared_ || !shared_->listed || !shared_->lists || shared_->k != K + 1 ||
+        shared_->listed->size() != 2 * n_ || shared_->lists->size() != shared_->k * 2 * n_)
+      return false;
+    std::vector<std::uint32_t> node_of_vertex(vertices_.size(), kNone);
+    for (std::size_t s = 0; s < n_; ++s) {
+      if (strokes_[s].closed) return false;
+      node_of_vertex[strokes_[s].vertices.front()] = static_cast<std::uint32_t>(2 * s);
+      node_of_vertex[strokes_[s].vertices.back()] = static_cast<std::uint32_t>(2 * s + 1);
+    }
+    std::vector<std::uint32_t> node_of(shared_->listed->size());
+    for (std::size_t i = 0; i < node_of.size(); ++i) {
+      const std::uint32_t v = (*shared_->listed)[i];
+      if (v >= vertices_.size() || node_of_vertex[v] == kNone) return false;
+      node_of[i] = node_of_vertex[v];
+    }
+    nbr_.assign(2 * N_ * K, kNone);
+    for (std::size_t i = 0; i < node_of.size(); ++i) {
+      const std::uint32_t v = node_of[i];
+      std::size_t k = 0;
+      for (std::size_t m = 0; m < shared_->k && k < K; ++m) {
+        const std::uint32_t c = (*shared_->lists)[i * shared_->k + m];
+        if (c == kNone) break;
+        if ((node_of[c] >> 1) != (v >> 1)) nbr_[v * K + k++] = node_of[c];
+      }
+    }
+    // The pseudo-stroke's ends: the K nearest stroke ends by a scan (nearest first, ties by node).
+    std::vector<std::pair<double, std::uint32_t>> near(2 * n_);
+    for (std::uint32_t v = static_cast<std::uint32_t>(2 * n_); v < 2 * N_; ++v) {
+      for (std::uint32_t c = 0; c < 2 * n_ && !is_free(v); ++c) near[c] = {dist2(point(v), point(c)), c};
+      const auto m = static_cast<std::ptrdiff_t>(is_free(v) ? 0 : std::min(K, near.size()));
+      std::partial_sort(near.begin(), near.begin() + m, near.end());
+      for (std::ptrdiff_t k = 0; k < m; ++k)
+        nbr_[v * K + static_cast<std::size_t>(k)] = near[static_cast<std::size_t>(k)].second;
+    }
+    result_.work += 2 * N_ * 16;
+    return true;
+  }
+
   void build_neighbours() {
+    if (neighbours_from_shared()) return;
     // All nodes but a free end; neighbours on the same stroke dropped.
     std::vector<Pt> pts;
     std::vector<std::uint32_t> node_of;
@@ -138,7 +186,8 @@ class TourImprover {
       len = N_ - len;
     }
     for (std::size_t k = 0; k < len / 2; ++k) {
-      const std::size_t i = wrap(static_cast<std::ptrdiff_t>(l + k)), j = wrap(static_cast<std::ptrdiff_t>(r) - static_cast<std::ptrdiff_t>(k));
+      const std::size_t i = wrap(static_cast<std::ptrdiff_t>(l + k)),
+                        j = wrap(static_cast<std::ptrdiff_t>(r) - static_cast<std::ptrdiff_t>(k));
       std::swap(tour_[i], tour_[j]);
     }
     for (std::size_t k = 0; k < len; ++k) {
@@ -165,13 +214,15 @@ class TourImprover {
     std::size_t start, seg_at;  // the rewritten arc's first position; the segment's new first position
     if (mid <= other) {
       start = p;
-      for (std::size_t k = 0; k < mid; ++k) buffer_.push_back(tour_[wrap(static_cast<std::ptrdiff_t>(p + len + k))]);
+      for (std::size_t k = 0; k < mid; ++k)
+        buffer_.push_back(tour_[wrap(static_cast<std::ptrdiff_t>(p + len + k))]);
       push_seg();
       seg_at = p + mid;
     } else {
       start = wrap(static_cast<std::ptrdiff_t>(q) + 1);
       push_seg();
-      for (std::size_t k = 0; k < other; ++k) buffer_.push_back(tour_[wrap(static_cast<std::ptrdiff_t>(start + k))]);
+      for (std::size_t k = 0; k < other; ++k)
+        buffer_.push_back(tour_[wrap(static_cast<std::ptrdiff_t>(start + k))]);
       seg_at = start;
     }
     if (reversed)
@@ -231,7 +282,8 @@ class TourImprover {
   bool try_or_opt(std::uint32_t s) {
     const std::size_t p = pos_[s];
     for (std::size_t len = 1; len <= 3 && len + 2 <= N_; ++len) {
-      const std::size_t prev = wrap(static_cast<std::ptrdiff_t>(p) - 1), next = wrap(static_cast<std::ptrdiff_t>(p + len));
+      const std::size_t prev = wrap(static_cast<std::ptrdiff_t>(p) - 1),
+                        next = wrap(static_cast<std::ptrdiff_t>(p + len));
       const std::uint32_t a = entry(p), b = exit(p + len - 1);
       const std::uint32_t xp = exit(prev), en = entry(next);
       const double removed = d(xp, a) + d(b, en) - d(xp, en);
@@ -247,7 +299,8 @@ class TourImprover {
           if (d_nc >= removed - kGainEps) break;
           const std::uint32_t t = c >> 1;
           const std::size_t q = pos_[t];
-          if (wrap(static_cast<std::ptrdiff_t>(q) - static_cast<std::ptrdiff_t>(p)) < len) continue;  // inside
+          if (wrap(static_cast<std::ptrdiff_t>(q) - static_cast<std::ptrdiff_t>(p)) < len)
+            continue;             // inside
           if (c == exit_of(t)) {  // insert after q
             if (q == prev) continue;
             const std::uint32_t cn = entry(q + 1);
@@ -260,7 +313,8 @@ class TourImprover {
             if (q == next) continue;
             const std::uint32_t cp = exit(q + N_ - 1);
             const double added = d(cp, end ? a : b) + d_nc - d(cp, c);
-            if (added - removed < -kGainEps && affordable_move(p, len, wrap(static_cast<std::ptrdiff_t>(q) - 1))) {
+            if (added - removed < -kGainEps &&
+                affordable_move(p, len, wrap(static_cast<std::ptrdiff_t>(q) - 1))) {
               move_segment(p, len, wrap(static_cast<std::ptrdiff_t>(q) - 1), end == 0);
               return true;
             }
@@ -272,9 +326,6 @@ class TourImprover {
   }
 
   void local_search() {
-    queued_.assign(N_, 0);
-    queue_.clear();
-    for (std::size_t i = 0; i < N_; ++i) touch(tour_[i]);
     while (!queue_.empty() && !stopped()) {
       const std::uint32_t s = queue_.front();
       queue_.pop_front();
@@ -309,6 +360,7 @@ class TourImprover {
         rotate_closed(strokes_[s], best_k);
         set_ends(s);
         ++moved;
+        touch(s), touch_position(i + N_ - 1), touch_position(i + 1);
       }
     }
     return moved;
@@ -321,8 +373,9 @@ class TourImprover {
     const std::size_t home = pos_[n_];
     const bool backwards = flip_[n_];
     for (std::size_t k = 1; k < N_; ++k) {
-      const std::size_t i = backwards ? wrap(static_cast<std::ptrdiff_t>(home) - static_cast<std::ptrdiff_t>(k))
-                                      : wrap(static_cast<std::ptrdiff_t>(home + k));
+      const std::size_t i = backwards
+                                ? wrap(static_cast<std::ptrdiff_t>(home) - static_cast<std::ptrdiff_t>(k))
+                                : wrap(static_cast<std::ptrdiff_t>(home + k));
       const std::uint32_t s = tour_[i];
       GridStroke g = std::move(strokes_[s]);
       if (flip_[s] != backwards) std::reverse(g.vertices.begin(), g.vertices.end());
@@ -336,6 +389,7 @@ class TourImprover {
   TourEnds ends_;
   std::chrono::steady_clock::time_point deadline_;
   std::size_t work_cap_;
+  const SharedNeighbours* shared_;
   std::size_t max_rewrite_ = kMaxRewrite;
   std::size_t K = 8;
   std::size_t n_ = 0, N_ = 0;
@@ -364,7 +418,8 @@ double tour_travel(const std::vector<GridStroke>& strokes, const std::vector<Gri
   return total;
 }
 
-void order_greedy(std::vector<GridStroke>& strokes, const std::vector<GridPoint>& vertices, const TourEnds& ends) {
+void order_greedy(std::vector<GridStroke>& strokes, const std::vector<GridPoint>& vertices,
+                  const TourEnds& ends) {
   // Every way into a stroke: both ends of an open one, every vertex of a closed one.
   struct Entry {
     std::uint32_t stroke, index;
@@ -385,23 +440,38 @@ void order_greedy(std::vector<GridStroke>& strokes, const std::vector<GridPoint>
   first[strokes.size()] = static_cast<std::uint32_t>(entries.size());
   points.reserve(entries.size());
   for (const Entry& e : entries) points.push_back(at(vertices, strokes[e.stroke].vertices[e.index]));
+  std::vector<std::uint8_t> closed(strokes.size());
+  for (std::size_t i = 0; i < strokes.size(); ++i) closed[i] = strokes[i].closed;
+  // The search touches only the tree and the entry arrays; the strokes are moved afterwards.
   KdTree tree(points);
+  std::vector<std::uint32_t> chosen;
+  chosen.reserve(strokes.size());
+  Pt here = ends.start;
+  std::uint32_t near = kNone;  // the entry where the pen stands (drawn): its leaf starts the next search
+  while (tree.alive()) {
+    const std::uint32_t found = near == kNone ? tree.nearest(here) : tree.nearest(here, near);
+    const Entry e = entries[found];
+    for (std::uint32_t k = first[e.stroke]; k < first[e.stroke + 1]; ++k) tree.erase(k);
+    near = closed[e.stroke] ? found : (e.index ? first[e.stroke] : first[e.stroke] + 1);
+    here = points[near];
+    chosen.push_back(found);
+  }
   std::vector<GridStroke> out;
   out.reserve(strokes.size());
-  Pt here = ends.start;
-  while (tree.alive()) {
-    const Entry e = entries[tree.nearest(here)];
-    for (std::uint32_t k = first[e.stroke]; k < first[e.stroke + 1]; ++k) tree.erase(k);
+  for (std::uint32_t found : chosen) {
+    const Entry e = entries[found];
     GridStroke s = std::move(strokes[e.stroke]);
-    if (s.closed) rotate_closed(s, e.index);
-    else if (e.index) std::reverse(s.vertices.begin(), s.vertices.end());
-    here = at(vertices, s.vertices.back());
+    if (s.closed)
+      rotate_closed(s, e.index);
+    else if (e.index)
+      std::reverse(s.vertices.begin(), s.vertices.end());
     out.push_back(std::move(s));
   }
   strokes = std::move(out);
 }
 
-void order_circuits(std::vector<GridStroke>& strokes, const std::vector<GridPoint>& vertices, const TourEnds& ends) {
+void order_circuits(std::vector<GridStroke>& strokes, const std::vector<GridPoint>& vertices,
+                    const TourEnds& ends) {
   // Circuits as ranges [begin, end) of the strokes.
   std::vector<std::uint32_t> begin{0};
   for (std::uint32_t i = 1; i < strokes.size(); ++i)
@@ -435,21 +505,26 @@ void order_circuits(std::vector<GridStroke>& strokes, const std::vector<GridPoin
   points.reserve(entries.size());
   for (const Entry& e : entries) {
     const GridStroke& s = strokes[e.stroke];
-    points.push_back(at(vertices, s.closed ? s.vertices[e.index] : (e.index ? s.vertices.back() : s.vertices.front())));
+    points.push_back(
+        at(vertices, s.closed ? s.vertices[e.index] : (e.index ? s.vertices.back() : s.vertices.front())));
   }
   KdTree tree(points);
   std::vector<GridStroke> out;
   out.reserve(strokes.size());
   Pt here = ends.start;
+  std::uint32_t near = kNone;  // the last circuit's entry: it ends by the virtual edge dropped there
   while (tree.alive()) {
-    const Entry e = entries[tree.nearest(here)];
+    near = near == kNone ? tree.nearest(here) : tree.nearest(here, near);
+    const Entry e = entries[near];
     const std::uint32_t c = circuit_of[e.stroke];
     for (std::uint32_t k = first[c]; k < first[c + 1]; ++k) tree.erase(k);
     const std::uint32_t b = begin[c], n = begin[c + 1] - b, j = e.stroke - b;
     for (std::uint32_t k = 0; k < n; ++k) {
       GridStroke& s = strokes[b + (e.index && !strokes[e.stroke].closed ? (j + n - k) % n : (j + k) % n)];
-      if (s.closed) rotate_closed(s, k == 0 ? e.index : 0);
-      else if (e.index) std::reverse(s.vertices.begin(), s.vertices.end());
+      if (s.closed)
+        rotate_closed(s, k == 0 ? e.index : 0);
+      else if (e.index)
+        std::reverse(s.vertices.begin(), s.vertices.end());
       out.push_back(std::move(s));
     }
     here = at(vertices, out.back().vertices.back());
@@ -457,76 +532,11 @@ void order_circuits(std::vector<GridStroke>& strokes, const std::vector<GridPoin
   strokes = std::move(out);
 }
 
-bool order_exact(std::vector<GridStroke>& strokes, const std::vector<GridPoint>& vertices, const TourEnds& ends) {
-  const std::size_t n = strokes.size();
-  if (n > kExactOrderStrokes) return false;
-  // Choices: (stroke, entry vertex index, exit vertex index).
-  struct Choice {
-    std::uint32_t stroke, entry, exit;
-    Pt in, out;
-  };
-  std::vector<Choice> choices;
-  for (std::uint32_t s = 0; s < n; ++s) {
-    const std::vector<std::uint32_t>& v = strokes[s].vertices;
-    const std::uint32_t last = static_cast<std::uint32_t>(v.size() - 1);
-    if (strokes[s].closed) {
-      for (std::uint32_t k = 0; k < last; ++k) choices.push_back({s, k, k, at(vertices, v[k]), at(vertices, v[k])});
-    } else {
-      choices.push_back({s, 0, last, at(vertices, v[0]), at(vertices, v[last])});
-      choices.push_back({s, last, 0, at(vertices, v[last]), at(vertices, v[0])});
-    }
-    if (choices.size() > kExactOrderChoices) return false;
-  }
-  if (n == 0) return true;
-  const std::size_t C = choices.size(), full = (std::size_t{1} << n) - 1;
-  const double inf = std::numeric_limits<double>::infinity();
-  std::vector<double> dp((full + 1) * C, inf);
-  std::vector<std::uint32_t> parent((full + 1) * C, kNone);
-  for (std::size_t c = 0; c < C; ++c) dp[(std::size_t{1} << choices[c].stroke) * C + c] = dist(ends.start, choices[c].in);
-  for (std::size_t mask = 1; mask <= full; ++mask)
-    for (std::size_t c = 0; c < C; ++c) {
-      const double base = dp[mask * C + c];
-      if (base == inf) continue;
-      for (std::size_t c2 = 0; c2 < C; ++c2) {
-        const std::size_t bit = std::size_t{1} << choices[c2].stroke;
-        if (mask & bit) continue;
-        const double v = base + dist(choices[c].out, choices[c2].in);
-        double& slot = dp[(mask | bit) * C + c2];
-        if (v < slot) slot = v, parent[(mask | bit) * C + c2] = static_cast<std::uint32_t>(c);
-      }
-    }
-  double best = inf;
-  std::size_t best_c = 0;
-  for (std::size_t c = 0; c < C; ++c) {
-    const double v = dp[full * C + c] + (ends.end_free ? 0.0 : dist(choices[c].out, ends.end));
-    if (v < best) best = v, best_c = c;
-  }
-  std::vector<std::uint32_t> sequence;
-  for (std::size_t mask = full, c = best_c; c != kNone;) {
-    sequence.push_back(static_cast<std::uint32_t>(c));
-    const std::uint32_t pc = parent[mask * C + c];
-    mask &= ~(std::size_t{1} << choices[c].stroke);
-    c = pc == kNone ? kNone : pc;
-  }
-  std::reverse(sequence.begin(), sequence.end());
-  std::vector<GridStroke> out;
-  out.reserve(n);
-  for (std::uint32_t c : sequence) {
-    const Choice& ch = choices[c];
-    GridStroke s = std::move(strokes[ch.stroke]);
-    if (s.closed) rotate_closed(s, ch.entry);
-    else if (ch.entry) std::reverse(s.vertices.begin(), s.vertices.end());
-    out.push_back(std::move(s));
-  }
-  strokes = std::move(out);
-  return true;
-}
-
 ImproveResult improve_order(std::vector<GridStroke>& strokes, const std::vector<GridPoint>& vertices,
                             const TourEnds& ends, std::chrono::steady_clock::time_point deadline,
-                            std::size_t work_per_stroke) {
+                            std::size_t work_per_stroke, const SharedNeighbours* shared) {
   if (strokes.empty()) return {};
-  TourImprover improver(strokes, vertices, ends, deadline, work_per_stroke * (strokes.size() + 1));
+  TourImprover improver(strokes, vertices, ends, deadline, work_per_stroke * (strokes.size() + 1), shared);
   return improver.run();
 }
 

@@ -8,9 +8,9 @@
 #include <cmath>
 #include <limits>
 #include <map>
-#include <utility>
 #include <numeric>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "core/camera/lookat_camera.hpp"
@@ -102,7 +102,8 @@ TEST(PenPlanBruteForce, SmallInstancesOptimal) {
 
 // ---- properties ----
 
-std::vector<Unit> group_units(const std::vector<PlotStroke>& strokes, int pen, StrokeLayer layer, double grid) {
+std::vector<Unit> group_units(const std::vector<PlotStroke>& strokes, int pen, StrokeLayer layer,
+                              double grid) {
   std::vector<PlotStroke> g;
   for (const PlotStroke& s : strokes)
     if (s.pen == pen && s.layer == layer) g.push_back(s);
@@ -119,7 +120,8 @@ std::vector<PlotPiece> group_pieces(const std::vector<PlotPiece>& pieces, int pe
 // The planner's drawing graph rebuilt here from the snapped pieces, as unit steps.
 std::vector<Unit> graph_units(const std::vector<PlotPiece>& pieces, double grid, double tolerance) {
   std::vector<plan::GridSegment> s;
-  for (const PlotPiece& p : pieces) s.push_back({plan_test::to_grid(p.a, grid), plan_test::to_grid(p.b, grid)});
+  for (const PlotPiece& p : pieces)
+    s.push_back({plan_test::to_grid(p.a, grid), plan_test::to_grid(p.b, grid)});
   const plan::PenGraph g = plan::build_pen_graph(s, tolerance);
   std::vector<Unit> u;
   for (const plan::GraphEdge& e : g.edges) plan_test::append_units(g.vertices[e.u], g.vertices[e.v], u);
@@ -130,7 +132,8 @@ std::vector<Unit> graph_units(const std::vector<PlotPiece>& pieces, double grid,
 bool same_strokes(const std::vector<PlotStroke>& a, const std::vector<PlotStroke>& b) {
   if (a.size() != b.size()) return false;
   for (std::size_t i = 0; i < a.size(); ++i) {
-    if (a[i].pen != b[i].pen || a[i].layer != b[i].layer || a[i].points.size() != b[i].points.size()) return false;
+    if (a[i].pen != b[i].pen || a[i].layer != b[i].layer || a[i].points.size() != b[i].points.size())
+      return false;
     for (std::size_t k = 0; k < a[i].points.size(); ++k)
       if (a[i].points[k].x != b[i].points[k].x || a[i].points[k].y != b[i].points[k].y) return false;
   }
@@ -139,8 +142,8 @@ bool same_strokes(const std::vector<PlotStroke>& a, const std::vector<PlotStroke
 
 // Every snapped piece of the group (the first 150) lies within `tolerance` grid units of the drawn strokes:
 // its two ends and midpoint are each that close to some drawn segment.
-void expect_pieces_covered(const std::vector<PlotPiece>& pieces, const std::vector<PlotStroke>& strokes, int pen,
-                           StrokeLayer layer, double grid, double tolerance) {
+void expect_pieces_covered(const std::vector<PlotPiece>& pieces, const std::vector<PlotStroke>& strokes,
+                           int pen, StrokeLayer layer, double grid, double tolerance) {
   std::vector<std::pair<Point2, Point2>> drawn;
   for (const PlotStroke& s : strokes)
     if (s.pen == pen && s.layer == layer)
@@ -164,7 +167,8 @@ void expect_pieces_covered(const std::vector<PlotPiece>& pieces, const std::vect
 }
 
 // Checks every order on `pieces`, with exact merging and with the default tolerance.
-void check_properties(const std::vector<PlotPiece>& pieces, double grid, Point2 home, const std::string& what) {
+void check_properties(const std::vector<PlotPiece>& pieces, double grid, Point2 home,
+                      const std::string& what) {
   SCOPED_TRACE(what);
   std::map<std::pair<int, int>, int> groups;
   for (const PlotPiece& p : pieces) groups[{p.pen, p.layer == StrokeLayer::Visible ? 0 : 1}] = 1;
@@ -179,7 +183,8 @@ void check_properties(const std::vector<PlotPiece>& pieces, double grid, Point2 
       o.merge_tolerance_grid = tolerance;
       o.time_budget_ms = 1e6;  // the work cap, not the clock, must end the search (determinism)
       const PenPlan plan = plan_pen_strokes(pieces, o);
-      SCOPED_TRACE("order " + std::to_string(static_cast<int>(order)) + " tolerance " + std::to_string(tolerance));
+      SCOPED_TRACE("order " + std::to_string(static_cast<int>(order)) + " tolerance " +
+                   std::to_string(tolerance));
       pen_up[static_cast<int>(order)] = plan.stats.pen_up_mm;
       // Joining loose ends within the tolerance only ever connects components.
       if (tolerance == 0) {
@@ -203,7 +208,8 @@ void check_properties(const std::vector<PlotPiece>& pieces, double grid, Point2 
       // Pens in order, visible before hidden.
       for (std::size_t i = 1; i < plan.strokes.size(); ++i) {
         const PlotStroke &a = plan.strokes[i - 1], &b = plan.strokes[i];
-        ASSERT_TRUE(a.pen < b.pen || (a.pen == b.pen && (a.layer == b.layer || a.layer == StrokeLayer::Visible)));
+        ASSERT_TRUE(a.pen < b.pen ||
+                    (a.pen == b.pen && (a.layer == b.layer || a.layer == StrokeLayer::Visible)));
       }
       for (const auto& [key, unused] : groups) {
         const StrokeLayer layer = key.second ? StrokeLayer::Hidden : StrokeLayer::Visible;
@@ -212,7 +218,8 @@ void check_properties(const std::vector<PlotPiece>& pieces, double grid, Point2 
         if (order == PenOrder::None) {
           // Every snapped piece, duplicates included.
           std::vector<Unit> all;
-          for (const PlotPiece& p : gp) plan_test::append_units(plan_test::to_grid(p.a, grid), plan_test::to_grid(p.b, grid), all);
+          for (const PlotPiece& p : gp)
+            plan_test::append_units(plan_test::to_grid(p.a, grid), plan_test::to_grid(p.b, grid), all);
           std::sort(all.begin(), all.end());
           EXPECT_EQ(drawn, all);
         } else if (tolerance == 0) {
@@ -225,15 +232,22 @@ void check_properties(const std::vector<PlotPiece>& pieces, double grid, Point2 
           // Each split of a piece at a loose end within the tolerance lengthens it by at most 2·tolerance.
           auto length = [](const std::vector<Unit>& units) {
             double l = 0;
-            for (const auto& [ax, ay, bx, by] : units) l += std::hypot(static_cast<double>(bx - ax), static_cast<double>(by - ay));
+            for (const auto& [ax, ay, bx, by] : units)
+              l += std::hypot(static_cast<double>(bx - ax), static_cast<double>(by - ay));
             return l;
           };
-          EXPECT_LE(length(drawn), length(plan_test::piece_unit_set(gp, grid)) + 4 * tolerance * static_cast<double>(gp.size()));
+          EXPECT_LE(length(drawn), length(plan_test::piece_unit_set(gp, grid)) +
+                                       4 * tolerance * static_cast<double>(gp.size()));
           expect_pieces_covered(gp, plan.strokes, key.first, layer, grid, tolerance);
         }
       }
       if (order == PenOrder::Optimized) {
         EXPECT_TRUE(same_strokes(plan.strokes, plan_pen_strokes(pieces, o).strokes)) << "not deterministic";
+        PlanOptions two = o;  // the greedy plan on a second thread: the same result
+        two.threads = 2;
+        const PenPlan threaded = plan_pen_strokes(pieces, two);
+        EXPECT_TRUE(same_strokes(plan.strokes, threaded.strokes)) << "threads change the plan";
+        EXPECT_EQ(plan.stats.kept_greedy, threaded.stats.kept_greedy);
         EXPECT_FALSE(plan.stats.budget_exhausted);
       }
     }
@@ -265,7 +279,8 @@ std::vector<PlotPiece> random_drawing(unsigned seed) {
       p.a = {a.x + t0 * (b.x - a.x), a.y + t0 * (b.y - a.y)};
       p.b = {a.x + t1 * (b.x - a.x), a.y + t1 * (b.y - a.y)};
     } else if (kind < 4 && !pieces.empty()) {  // T-junction: start on another piece
-      const PlotPiece& q = pieces[static_cast<std::size_t>(r.integer(0, static_cast<int>(pieces.size()) - 1))];
+      const PlotPiece& q =
+          pieces[static_cast<std::size_t>(r.integer(0, static_cast<int>(pieces.size()) - 1))];
       const double t = r(0, 1);
       p.pen = q.pen, p.layer = q.layer;
       p.a = {q.a.x + t * (q.b.x - q.a.x), q.a.y + t * (q.b.y - q.a.y)};
@@ -329,7 +344,8 @@ TEST(PenPlanHlr, RealScenes) {
   {
     Case c{"box city 5x5", {}, view({7.5, 7.5, 0}, 40, 30, 35)};
     int i = 0;
-    for (Solid& s : gen::box_city(5, 5, 3)) c.scene.objects.push_back({"b" + std::to_string(i++), std::move(s)});
+    for (Solid& s : gen::box_city(5, 5, 3))
+      c.scene.objects.push_back({"b" + std::to_string(i++), std::move(s)});
     cases.push_back(std::move(c));
   }
   {

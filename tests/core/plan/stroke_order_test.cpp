@@ -1,6 +1,7 @@
 // Stroke ordering on synthetic strokes: greedy, circuit, exact and improved orders are permutations of the
 // strokes (each possibly reversed, closed ones rotated), improvement never lengthens the tour, the exact
-// order is optimal (brute force), and the k-d tree and grid neighbour queries agree with a linear scan.
+// order is optimal (brute force), improvement with shared neighbour lists works, and the k-d tree and grid
+// neighbour queries agree with a linear scan.
 #include "core/plan/stroke_order.hpp"
 
 #include <gtest/gtest.h>
@@ -71,9 +72,10 @@ TEST(StrokeOrder, OrdersArePermutationsAndImprovementHelps) {
     std::vector<GridPoint> vertices;
     const int n = r.integer(1, trial < 40 ? 40 : 3000);
     const std::vector<GridStroke> strokes = random_strokes(r, vertices, n, 1000);
-    const TourEnds ends{{static_cast<double>(r.integer(-100, 1100)), static_cast<double>(r.integer(-100, 1100))},
-                        {static_cast<double>(r.integer(-100, 1100)), static_cast<double>(r.integer(-100, 1100))},
-                        r.integer(0, 1) == 1};
+    const TourEnds ends{
+        {static_cast<double>(r.integer(-100, 1100)), static_cast<double>(r.integer(-100, 1100))},
+        {static_cast<double>(r.integer(-100, 1100)), static_cast<double>(r.integer(-100, 1100))},
+        r.integer(0, 1) == 1};
     const auto want = canonical_set(strokes);
     std::vector<GridStroke> greedy = strokes, circuits = strokes;
     order_greedy(greedy, vertices, ends);
@@ -83,7 +85,8 @@ TEST(StrokeOrder, OrdersArePermutationsAndImprovementHelps) {
     for (const std::vector<GridStroke>* seed : {&greedy, &circuits}) {
       std::vector<GridStroke> improved = *seed;
       const double before = tour_travel(improved, vertices, ends);
-      const ImproveResult res = improve_order(improved, vertices, ends, std::chrono::steady_clock::now() + std::chrono::hours(1));
+      const ImproveResult res =
+          improve_order(improved, vertices, ends, std::chrono::steady_clock::now() + std::chrono::hours(1));
       EXPECT_EQ(canonical_set(improved), want);
       const double after = tour_travel(improved, vertices, ends);
       EXPECT_LE(after, before + 1e-6) << "trial " << trial;
@@ -100,6 +103,42 @@ TEST(StrokeOrder, OrdersArePermutationsAndImprovementHelps) {
 }
 
 // order_exact against enumeration of every order, direction and entry vertex.
+// Beyond 16 384 strokes improve_order() can take the matching's neighbour lists over the stroke ends
+// (pen_plan.cpp): the result is still a permutation, no longer, and deterministic.
+TEST(StrokeOrder, ImproveWithSharedNeighbours) {
+  Rng r(5);
+  std::vector<GridPoint> vertices;
+  std::vector<GridStroke> strokes;
+  for (std::uint32_t s = 0; s < 17000; ++s) {
+    GridStroke g;
+    for (int k = 0; k < 2; ++k) {
+      g.vertices.push_back(static_cast<std::uint32_t>(vertices.size()));
+      vertices.push_back({r.integer(0, 20000), r.integer(0, 20000)});
+    }
+    strokes.push_back(std::move(g));
+  }
+  std::vector<std::uint32_t> listed(vertices.size());
+  std::iota(listed.begin(), listed.end(), 0u);
+  std::vector<Pt> points;
+  for (const GridPoint& v : vertices) points.push_back({static_cast<double>(v.x), static_cast<double>(v.y)});
+  std::vector<std::uint32_t> lists;
+  all_k_nearest(points, 6, lists, false);
+  const SharedNeighbours shared{&listed, &lists, 6};
+  const TourEnds ends{{0, 0}, {100, 0}, false};
+  std::vector<GridStroke> a = strokes, b = strokes;
+  order_circuits(a, vertices, ends);
+  const double before = tour_travel(a, vertices, ends);
+  b = a;
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::hours(1);
+  const ImproveResult ra = improve_order(a, vertices, ends, deadline, 500, &shared);
+  improve_order(b, vertices, ends, deadline, 500, &shared);
+  EXPECT_EQ(canonical_set(a), canonical_set(strokes));
+  EXPECT_LT(tour_travel(a, vertices, ends), before);
+  EXPECT_GT(ra.moves, 0u);
+  ASSERT_EQ(a.size(), b.size());
+  for (std::size_t i = 0; i < a.size(); ++i) EXPECT_EQ(a[i].vertices, b[i].vertices);
+}
+
 TEST(StrokeOrder, ExactIsOptimal) {
   Rng r(5);
   for (int trial = 0; trial < 40; ++trial) {
@@ -112,7 +151,9 @@ TEST(StrokeOrder, ExactIsOptimal) {
     std::vector<int> order(strokes.size());
     std::iota(order.begin(), order.end(), 0);
     double best = 1e300;
-    auto pt = [&](std::uint32_t v) { return Pt{static_cast<double>(vertices[v].x), static_cast<double>(vertices[v].y)}; };
+    auto pt = [&](std::uint32_t v) {
+      return Pt{static_cast<double>(vertices[v].x), static_cast<double>(vertices[v].y)};
+    };
     do {
       // Choices per stroke: (entry, exit) vertex pairs.
       std::vector<std::vector<std::pair<Pt, Pt>>> ch;
@@ -120,7 +161,8 @@ TEST(StrokeOrder, ExactIsOptimal) {
         const GridStroke& g = strokes[static_cast<std::size_t>(s)];
         std::vector<std::pair<Pt, Pt>> c;
         if (g.closed) {
-          for (std::size_t k = 0; k + 1 < g.vertices.size(); ++k) c.emplace_back(pt(g.vertices[k]), pt(g.vertices[k]));
+          for (std::size_t k = 0; k + 1 < g.vertices.size(); ++k)
+            c.emplace_back(pt(g.vertices[k]), pt(g.vertices[k]));
         } else {
           c.emplace_back(pt(g.vertices.front()), pt(g.vertices.back()));
           c.emplace_back(pt(g.vertices.back()), pt(g.vertices.front()));
@@ -151,7 +193,9 @@ TEST(KdTree, NearestAndKNearestMatchLinearScan) {
   for (int trial = 0; trial < 20; ++trial) {
     const int n = r.integer(1, 2000);
     std::vector<Pt> p;
-    for (int i = 0; i < n; ++i) p.push_back({static_cast<double>(r.integer(0, trial % 2 ? 30 : 100000)), static_cast<double>(r.integer(0, 100))});
+    for (int i = 0; i < n; ++i)
+      p.push_back({static_cast<double>(r.integer(0, trial % 2 ? 30 : 100000)),
+                   static_cast<double>(r.integer(0, 100))});
     KdTree tree(p);
     std::vector<char> alive(static_cast<std::size_t>(n), 1);
     std::vector<std::uint32_t> found, grid;
@@ -164,6 +208,8 @@ TEST(KdTree, NearestAndKNearestMatchLinearScan) {
         if (alive[i]) all.emplace_back(dist2(at, p[i]), i);
       std::sort(all.begin(), all.end());
       const std::uint32_t nn = tree.nearest(at);
+      // The bottom-up search from any point's leaf (live, erased or out of range) gives the same answer.
+      EXPECT_EQ(tree.nearest(at, static_cast<std::uint32_t>(r.integer(0, n))), nn);
       if (all.empty()) {
         EXPECT_EQ(nn, KdTree::kNone);
       } else {
@@ -185,7 +231,8 @@ TEST(KdTree, NearestAndKNearestMatchLinearScan) {
     all_k_nearest(p, 5, approx, false);
     for (std::uint32_t i = 0; i < p.size(); ++i) {
       full.k_nearest(p[i], 5, i, found);
-      for (std::size_t k = 0; k < 5; ++k) EXPECT_EQ(grid[i * 5 + k], k < found.size() ? found[k] : KdTree::kNone);
+      for (std::size_t k = 0; k < 5; ++k)
+        EXPECT_EQ(grid[i * 5 + k], k < found.size() ? found[k] : KdTree::kNone);
       std::set<std::uint32_t> seen;
       double last = 0;
       for (std::size_t k = 0; k < 5; ++k) {
