@@ -8,24 +8,14 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "tests/runtime/cli_run.hpp"
 #include "tests/runtime/runtime_test_support.hpp"
 
 namespace hlr::runtime {
 namespace {
 
-struct Result {
-  int code;
-  std::string out, err;
-};
-
-Result run(std::vector<std::string> args) {
-  args.insert(args.begin(), "hlrscript");
-  std::vector<const char*> argv;
-  for (const std::string& a : args) argv.push_back(a.c_str());
-  std::ostringstream out, err;
-  const int code = run_cli(static_cast<int>(argv.size()), argv.data(), out, err);
-  return {code, out.str(), err.str()};
-}
+using Result = test::CliResult;
+using test::run;
 
 const char* kScene =
     "animate frames 3\n"

@@ -1,8 +1,8 @@
 // The output devices end to end through run_cli (tracker issue 4): every example on every built-in
 // plotter profile and paper, read back by the independent HP-GL reader (tests/support/hpgl_reader.hpp),
 // and hp2xx's picture of the HPGL against the PNG of the same frame. The devices against each other and
-// the pen orders: devices_test_agree_test.cpp; options, paper sizes and errors:
-// devices_test_options_test.cpp.
+// the pen orders: devices_agree_test.cpp; options, paper sizes and errors:
+// devices_options_test.cpp.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -15,6 +15,7 @@
 
 #include "core/device/hpgl_profile.hpp"
 #include "runtime/cli.hpp"
+#include "tests/runtime/cli_run.hpp"
 #include "tests/runtime/runtime_test_support.hpp"
 #include "tests/support/hpgl_reader.hpp"
 #include "tests/support/raster_compare.hpp"
@@ -24,26 +25,9 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct Result {
-  int code;
-  std::string out, err;
-};
-
-Result run(std::vector<std::string> args) {
-  args.insert(args.begin(), "hlrscript");
-  std::vector<const char*> argv;
-  for (const std::string& a : args) argv.push_back(a.c_str());
-  std::ostringstream out, err;
-  const int code = run_cli(static_cast<int>(argv.size()), argv.data(), out, err);
-  return {code, out.str(), err.str()};
-}
-
-std::string read_text(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using Result = test::CliResult;
+using test::read_text;
+using test::run;
 
 const fs::path kTestsDir = fs::path(HLR_TEST_DATA_DIR).parent_path();
 const fs::path kExamplesDir = kTestsDir.parent_path() / "examples";

@@ -19,6 +19,7 @@
 
 #include "core/device/hpgl_profile.hpp"
 #include "runtime/cli.hpp"
+#include "tests/runtime/cli_run.hpp"
 #include "tests/runtime/runtime_test_support.hpp"
 #include "tests/support/hpgl_reader.hpp"
 
@@ -27,26 +28,9 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct Result {
-  int code;
-  std::string out, err;
-};
-
-Result run(std::vector<std::string> args) {
-  args.insert(args.begin(), "hlrscript");
-  std::vector<const char*> argv;
-  for (const std::string& a : args) argv.push_back(a.c_str());
-  std::ostringstream out, err;
-  const int code = run_cli(static_cast<int>(argv.size()), argv.data(), out, err);
-  return {code, out.str(), err.str()};
-}
-
-std::string read_text(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using Result = test::CliResult;
+using test::read_text;
+using test::run;
 
 std::string current_test_name() {
   std::string name = ::testing::UnitTest::GetInstance()->current_test_info()->name();
