@@ -1,5 +1,6 @@
 #include "core/plan/euler_strokes.hpp"
 
+#include <algorithm>
 #include <cassert>
 #include <stdexcept>
 
@@ -113,6 +114,14 @@ std::vector<GridStroke> euler_strokes(const PenGraph& g, const std::vector<Verte
     } while (kv != first_virtual);
   }
   return strokes;
+}
+
+void rotate_closed(GridStroke& s, std::size_t k) {
+  if (k == 0) return;
+  std::vector<std::uint32_t>& v = s.vertices;
+  v.pop_back();
+  std::rotate(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(k), v.end());
+  v.push_back(v.front());
 }
 
 }  // namespace hlr::plan

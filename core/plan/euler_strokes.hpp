@@ -28,6 +28,9 @@ using VertexPair = std::pair<std::uint32_t, std::uint32_t>;
 // drawn exactly once. Strokes come out grouped by augmented circuit, in the circuit's order.
 std::vector<GridStroke> euler_strokes(const PenGraph& g, const std::vector<VertexPair>& pairs);
 
+// Closed stroke: start it at its `k`-th vertex (0 ≤ k < size − 1).
+void rotate_closed(GridStroke& s, std::size_t k);
+
 // The naive pairing: within each component, odd vertices taken in increasing number two by two.
 std::vector<VertexPair> sequential_pairing(const PenGraph& g);
 

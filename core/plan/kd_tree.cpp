@@ -80,13 +80,10 @@ void KdTree::erase(std::uint32_t index) {
   for (std::uint32_t id = leaf_[at]; id != kNone; id = nodes_[id].parent) --nodes_[id].alive;
 }
 
-std::uint32_t KdTree::nearest(Pt q) const {
-  double best = std::numeric_limits<double>::infinity();
-  std::uint32_t best_index = kNone;
-  if (nodes_.empty() || !nodes_[0].alive) return kNone;
+void KdTree::search_subtree(std::uint32_t root, Pt q, double& best, std::uint32_t& best_index) const {
   Scored stack[96];  // (box distance², node)
   int top = 0;
-  stack[top++] = {box_dist2(nodes_[0], q), 0};
+  stack[top++] = {box_dist2(nodes_[root], q), root};
   while (top) {
     const auto [bound, id] = stack[--top];
     if (bound > best) continue;
@@ -107,6 +104,13 @@ std::uint32_t KdTree::nearest(Pt q) const {
     else
       stack[top++] = {dl, n.left}, stack[top++] = {dr, n.right};
   }
+}
+
+std::uint32_t KdTree::nearest(Pt q) const {
+  double best = std::numeric_limits<double>::infinity();
+  std::uint32_t best_index = kNone;
+  if (nodes_.empty() || !nodes_[0].alive) return kNone;
+  search_subtree(0, q, best, best_index);
   return best_index;
 }
 
@@ -114,36 +118,12 @@ std::uint32_t KdTree::nearest(Pt q, std::uint32_t near_index) const {
   if (nodes_.empty() || !nodes_[0].alive || near_index >= position_.size()) return nearest(q);
   double best = std::numeric_limits<double>::infinity();
   std::uint32_t best_index = kNone;
-  Scored stack[96];
   // The leaf of near_index, then the sibling subtree of every node on the way up: the whole tree once.
   for (std::uint32_t from = kNone, id = leaf_[position_[near_index]]; id != kNone;
        from = id, id = nodes_[id].parent) {
-    int top = 0;
-    if (from == kNone)
-      stack[top++] = {box_dist2(nodes_[id], q), id};
-    else {
-      const std::uint32_t sibling = nodes_[id].left == from ? nodes_[id].right : nodes_[id].left;
-      stack[top++] = {box_dist2(nodes_[sibling], q), sibling};
-    }
-    while (top) {
-      const auto [bound, nid] = stack[--top];
-      if (bound > best) continue;
-      const Node& n = nodes_[nid];
-      if (!n.alive) continue;
-      if (n.left == kNone) {
-        for (std::uint32_t i = n.lo; i < n.hi; ++i) {
-          if (!alive_[i]) continue;
-          const double d = dist2(q, points_[i]);
-          if (d < best || (d == best && index_[i] < best_index)) best = d, best_index = index_[i];
-        }
-        continue;
-      }
-      const double dl = box_dist2(nodes_[n.left], q), dr = box_dist2(nodes_[n.right], q);
-      if (dl <= dr)
-        stack[top++] = {dr, n.right}, stack[top++] = {dl, n.left};
-      else
-        stack[top++] = {dl, n.left}, stack[top++] = {dr, n.right};
-    }
+    const std::uint32_t root =
+        from == kNone ? id : (nodes_[id].left == from ? nodes_[id].right : nodes_[id].left);
+    search_subtree(root, q, best, best_index);
   }
   return best_index;
 }

@@ -5,6 +5,7 @@
 // Ties are broken by the lower index, so results are deterministic.
 #pragma once
 
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -18,6 +19,7 @@ inline double dist2(Pt a, Pt b) {
   const double dx = a.x - b.x, dy = a.y - b.y;
   return dx * dx + dy * dy;
 }
+inline double dist(Pt a, Pt b) { return std::sqrt(dist2(a, b)); }
 
 class KdTree {
  public:
@@ -47,6 +49,9 @@ class KdTree {
     std::uint32_t parent;
     std::uint32_t alive;
   };
+  // Searches the subtree at `root` for a live point nearer than `best` (ties: lower index), updating
+  // best and best_index.
+  void search_subtree(std::uint32_t root, Pt q, double& best, std::uint32_t& best_index) const;
   static double box_dist2(const Node& n, Pt q) {
     const double dx = q.x < n.xmin ? n.xmin - q.x : (q.x > n.xmax ? q.x - n.xmax : 0.0);
     const double dy = q.y < n.ymin ? n.ymin - q.y : (q.y > n.ymax ? q.y - n.ymax : 0.0);

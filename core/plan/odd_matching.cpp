@@ -12,8 +12,6 @@ namespace {
 
 using Pairs = std::vector<std::pair<std::uint32_t, std::uint32_t>>;
 
-double dist(Pt a, Pt b) { return std::sqrt(dist2(a, b)); }
-
 // dp[mask] = best matching of the points in mask, always pairing its lowest point first.
 std::vector<double> subset_dp(const std::vector<Pt>& p, std::vector<std::uint8_t>* partner_of_lowest) {
   const std::size_t n = p.size();

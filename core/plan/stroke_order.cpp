@@ -15,16 +15,6 @@ constexpr std::size_t kMaxRewrite = 25000;
 Pt at(const std::vector<GridPoint>& vertices, std::uint32_t v) {
   return {static_cast<double>(vertices[v].x), static_cast<double>(vertices[v].y)};
 }
-double dist(Pt a, Pt b) { return std::sqrt(dist2(a, b)); }
-
-// Closed stroke: start it at its `k`-th vertex (0 ≤ k < size − 1).
-void rotate_closed(GridStroke& s, std::size_t k) {
-  if (k == 0) return;
-  std::vector<std::uint32_t>& v = s.vertices;
-  v.pop_back();
-  std::rotate(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(k), v.end());
-  v.push_back(v.front());
-}
 
 class TourImprover {
  public:
