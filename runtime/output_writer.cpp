@@ -61,7 +61,7 @@ PageSpec page_spec_for(const FrameOutput& first, const DeviceOptions& d) {
 
 // The HPGL profile: --plotter, else the script's `output ... plotter NAME`, else the generic HP-GL
 // profile. Names are looked up among the script's declared plotters first, then the built-in ones.
-HpglProfile plotter_for(const OutputTarget& target, const FrameOutput& first, const DeviceOptions& d) {
+HpglProfile plotter_for(const FrameOutput& first, const DeviceOptions& d) {
   const bool from_cli = d.plotter.has_value();
   const std::optional<std::string> wanted = from_cli       ? d.plotter
                                             : first.output ? first.output->plotter
@@ -77,7 +77,6 @@ HpglProfile plotter_for(const OutputTarget& target, const FrameOutput& first, co
                            " (or declare one: plotter NAME { base: \"hp7475a\", ... })";
   if (!from_cli && first.output && first.output->plotter_span)
     fail(*first.output->plotter_span, message, hint);
-  (void)target;
   throw RunError((from_cli ? "--plotter: " : "") + message, hint, 64);
 }
 
@@ -113,7 +112,7 @@ std::vector<WrittenFrame> write_output(const OutputTarget& target, const std::ve
   plot.plan.time_budget_ms = d.plan_budget_ms;
   std::optional<HpglProfile> profile;
   if (target.device == Device::Hpgl) {
-    profile = plotter_for(target, first, d);
+    profile = plotter_for(first, d);
     if (d.relative) profile->relative = *d.relative;
     plot.plan.grid_mm = profile->unit_mm;
     plot.plan.speeds = profile->speeds;

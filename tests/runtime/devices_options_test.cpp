@@ -84,7 +84,7 @@ std::pair<double, double> page_size_pts(const std::string& info) {
 }
 
 TEST(DevicesPdf, PageSizesPagesAndTitle) {
-  if (!have("pdfinfo")) GTEST_SKIP() << "pdfinfo (poppler-utils) is not installed";
+  ASSERT_TRUE(have("pdfinfo")) << "pdfinfo (poppler-utils) is not installed: run scripts/setup.sh";
   const test::TempDir dir(current_test_name());
   const std::string cube = dir.write("cube.hls", kCube).string();
   const std::string anim = dir.write("anim.hls", kThreeFrames).string();

@@ -250,7 +250,7 @@ TEST(DevicesPlotters, EveryRangeEitherOrientationEitherMoves) {
 class Hp2xxAgainstPng : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(Hp2xxAgainstPng, SameDrawing) {
-  if (!hlr::test::have_hp2xx()) GTEST_SKIP() << "hp2xx is not installed";
+  ASSERT_TRUE(hlr::test::have_hp2xx()) << "hp2xx is not installed: run scripts/setup.sh";
   const test::TempDir dir(current_test_name());
   const std::string script = (kExamplesDir / GetParam()).string();
   const fs::path png = dir.path() / "x.png", hpgl = dir.path() / "x.hpgl";

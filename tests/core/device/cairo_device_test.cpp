@@ -242,7 +242,7 @@ class CairoDevice : public ::testing::Test {
 // --- PDF --------------------------------------------------------------------------------------------
 
 TEST_F(CairoDevice, PdfPagesSizesAndMetadata) {
-  if (!have_tool("pdfinfo")) GTEST_SKIP() << "pdfinfo (poppler-utils) is not installed";
+  ASSERT_TRUE(have_tool("pdfinfo")) << "pdfinfo (poppler-utils) is not installed: run scripts/setup.sh";
   PlotPage a4 = test_page(), letter = test_page(), small = test_page();
   a4.width_mm = 297;
   a4.height_mm = 210;
@@ -268,7 +268,7 @@ TEST_F(CairoDevice, PdfPagesSizesAndMetadata) {
 }
 
 TEST_F(CairoDevice, PdfWithoutTitleHasCreatorOnly) {
-  if (!have_tool("pdfinfo")) GTEST_SKIP() << "pdfinfo (poppler-utils) is not installed";
+  ASSERT_TRUE(have_tool("pdfinfo")) << "pdfinfo (poppler-utils) is not installed: run scripts/setup.sh";
   const fs::path target = dir_ / "plain.pdf";
   write_cairo(target, {test_page()}, options(CairoFormat::Pdf));
   const auto info = run("pdfinfo " + quoted(target));
@@ -280,7 +280,7 @@ TEST_F(CairoDevice, PdfWithoutTitleHasCreatorOnly) {
 
 // Rasterised by poppler, the PDF has its strokes at the same millimetres as the PNG device.
 TEST_F(CairoDevice, PdfStrokesWhereThePageSays) {
-  if (!have_tool("pdftoppm")) GTEST_SKIP() << "pdftoppm (poppler-utils) is not installed";
+  ASSERT_TRUE(have_tool("pdftoppm")) << "pdftoppm (poppler-utils) is not installed: run scripts/setup.sh";
   const fs::path target = dir_ / "page.pdf";
   write_cairo(target, {test_page()}, options(CairoFormat::Pdf));
   ASSERT_TRUE(run("pdftoppm -r 254 -png -singlefile " + quoted(target) + " " + quoted(dir_ / "raster")));
@@ -298,7 +298,8 @@ TEST_F(CairoDevice, SvgIsSizedInMillimetresAndParses) {
   const std::string svg = slurp(target);
   EXPECT_NEAR(svg_mm_attribute(svg, "width"), 215.9, 1e-3) << svg.substr(0, 400);
   EXPECT_NEAR(svg_mm_attribute(svg, "height"), 279.4, 1e-3) << svg.substr(0, 400);
-  if (!have_tool("rsvg-convert")) GTEST_SKIP() << "rsvg-convert (librsvg2-bin) is not installed";
+  ASSERT_TRUE(have_tool("rsvg-convert"))
+      << "rsvg-convert (librsvg2-bin) is not installed: run scripts/setup.sh";
   ASSERT_TRUE(run("rsvg-convert -o " + quoted(dir_ / "letter.png") + " " + quoted(target)))
       << "rsvg-convert failed";
   const Image im = read_png(dir_ / "letter.png", 96 / 25.4);
@@ -307,7 +308,8 @@ TEST_F(CairoDevice, SvgIsSizedInMillimetresAndParses) {
 }
 
 TEST_F(CairoDevice, SvgStrokesWhereThePageSays) {
-  if (!have_tool("rsvg-convert")) GTEST_SKIP() << "rsvg-convert (librsvg2-bin) is not installed";
+  ASSERT_TRUE(have_tool("rsvg-convert"))
+      << "rsvg-convert (librsvg2-bin) is not installed: run scripts/setup.sh";
   const fs::path target = dir_ / "page.svg";
   write_cairo(target, {test_page()}, options(CairoFormat::Svg));
   const fs::path png = dir_ / "page.png";

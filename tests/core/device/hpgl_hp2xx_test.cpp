@@ -97,7 +97,7 @@ PlotPage drawing(double w, double h, double margin) {
 class HpglHp2xx : public ::testing::Test {
  protected:
   void SetUp() override {
-    if (!have_hp2xx()) GTEST_SKIP() << "hp2xx is not installed";
+    ASSERT_TRUE(have_hp2xx()) << "hp2xx is not installed: run scripts/setup.sh";
     dir_ = fs::temp_directory_path() / ("hlr-hp2xx-" + std::to_string(::getpid()) + "-" +
                                         ::testing::UnitTest::GetInstance()->current_test_info()->name());
     fs::remove_all(dir_);
