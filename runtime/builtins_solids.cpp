@@ -6,6 +6,7 @@
 
 #include "runtime/builtins.hpp"
 #include "runtime/format_value.hpp"
+#include "stdlib/desens_models.hpp"
 #include "stdlib/generators.hpp"
 
 namespace hlr::runtime {
@@ -140,6 +141,13 @@ Value lblock_(CallArgs& call) {
   return generated_solid(call, 8, [&] { return stdlib::l_block({0, 0, 0}, size, upright, foot); });
 }
 
+// desens_carrier(): Desens' aircraft carrier of 1969 (stdlib/desens_models.hpp), the demo's model.
+Value desens_carrier_(CallArgs& call) {
+  static const std::vector<Param> params = {};
+  (void)call.bind(params);
+  return generated_solid(call, 32, [] { return stdlib::desens_carrier(); });
+}
+
 // The registration table of the solid generators.
 const BuiltinEntry kSolidBuiltins[] = {
     {"box", "box(sx, sy, sz) | box(min: p, max: q) | box(size: v, center: p)", box_},
@@ -150,6 +158,7 @@ const BuiltinEntry kSolidBuiltins[] = {
     {"torus", "torus(R, r, major: 48, minor: 24, crease: 30)", torus_},
     {"stairs", "stairs(steps, width, rise, run)", stairs_},
     {"lblock", "lblock(size, upright, foot)", lblock_},
+    {"desens_carrier", "desens_carrier()", desens_carrier_},
 };
 
 }  // namespace

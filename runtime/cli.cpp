@@ -3,18 +3,17 @@
 // succeeded. Errors become exit statuses here and nowhere else.
 #include "runtime/cli.hpp"
 
-#include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
+#include <ctime>
+#include <filesystem>
 #include <ostream>
-#include <thread>
 
 #include "core/device/atomic_file.hpp"
-#include "core/device/cairo_device.hpp"
-#include "core/device/page_plot.hpp"
-#include "runtime/demo_scene.hpp"
+#include "runtime/demo_script.hpp"
 #include "runtime/eval_error.hpp"
-#include "runtime/frame_runner.hpp"
+#include "runtime/frame_pipeline.hpp"
 #include "runtime/output_plan.hpp"
 #include "runtime/program.hpp"
 
@@ -23,6 +22,8 @@ namespace hlr::runtime {
 namespace {
 
 constexpr const char* kVersion = "hlrscript 0.1.0";
+
+using Clock = std::chrono::steady_clock;
 
 int report(std::ostream& err, const EvalError& e, const Program* program) {
   if (e.diagnostics.empty() || !program) {
@@ -34,12 +35,12 @@ int report(std::ostream& err, const EvalError& e, const Program* program) {
 }
 
 // A device failure; at the script's `output` statement when the name came from there.
-int report(std::ostream& err, const DeviceError& e, const OutputTarget& target, const Program& program) {
-  if (!target.span) {
+int report(std::ostream& err, const OutputError& e, const Program& program) {
+  if (!e.target.span) {
     err << "hlrscript: error: " << e.what() << "\n";
   } else {
     lang::Diagnostic d;
-    d.span = *target.span;
+    d.span = *e.target.span;
     d.message = e.what();
     print_diagnostics(err, {d}, program.sources());
   }
@@ -52,63 +53,34 @@ int report(std::ostream& err, const RunError& e) {
   return e.exit_code;
 }
 
-int run_demo(const CliOptions& o, std::ostream& out, std::ostream& err) {
-  const std::string target = o.output.value_or("carrier.pdf");
-  if (device_for(target) != Device::Pdf) {
-    err << "hlrscript: error: '" << target << "': the demo writes PDF only; name the output *.pdf\n";
-    return kExitUsage;
-  }
-  HlrOptions options;
-  options.include_hidden = o.hidden.value_or(false);
-  DemoStats stats;
-  const auto drawings = render_carrier_demo(o.demo_frames, options, stats);
-  PagePlotOptions plot;
-  plot.include_hidden = options.include_hidden;
-  plot.plan.order = o.device.pen_order;
-  std::vector<PlotPage> pages;
-  for (const DrawingPage& d : drawings) pages.push_back(plot_page(d.segments, d.frame, d.caption, plot).page);
-  CairoOptions pdf;
-  pdf.format = CairoFormat::Pdf;
-  pdf.title = "hlrscript demo: Desens' carrier";
-  write_cairo(target, pages, pdf);
-  char line[256];
-  std::snprintf(line, sizeof line,
-                "wrote %s: %zu pages, %zu segments, hidden-line time %.1f ms (%.2f ms per frame)\n",
-                target.c_str(), stats.frames, stats.segments, stats.seconds * 1e3,
-                stats.seconds * 1e3 / static_cast<double>(stats.frames));
-  out << line;
-  return kExitOk;
-}
-
-void print_plan_stats(std::ostream& err, const OutputTarget& target,
-                      const std::vector<WrittenFrame>& written) {
-  for (const WrittenFrame& w : written) {
-    const PlanStats& s = w.plan;
-    char line[640];
-    std::snprintf(
-        line, sizeof line,
-        "frame %d -> %s: %zu visible pieces (%zu drawing-graph edges after snapping, merging, splitting); "
-        "pen-down %.1f mm, pen-up %.1f mm "
-        "(mean %.1f, median %.1f), %zu lifts (lower bound %zu), plotting ~%.1f s, planned in %.2f ms\n",
-        w.frame, target.path.filename().string().c_str(), w.visible_segments, s.merged_pieces, s.pen_down_mm,
-        s.pen_up_mm, s.pen_up_mean_mm, s.pen_up_median_mm, s.lifts, s.lift_lower_bound, s.plot_seconds,
-        s.planning_ms);
-    err << line;
-  }
-}
-
-void print_stats(std::ostream& err, const std::vector<FrameOutput>& frames) {
-  for (const FrameOutput& f : frames) {
+void print_stats(std::ostream& err, const PipelineResult& result) {
+  for (const FrameRecord& f : result.frames) {
     char line[320];
     std::snprintf(
         line, sizeof line,
         "frame %d: camera %s, %zu objects, %zu faces, %zu segments (%zu candidate edges, %zu occluders, "
         "%zu face tests, %zu intersection pieces), evaluate %.2f ms, hidden-line %.2f ms\n",
-        f.time.frame, f.camera_name.c_str(), f.object_names.size(), f.faces, f.segments.size(),
+        f.time.frame, f.camera_name.c_str(), f.object_names.size(), f.faces, f.segments,
         f.stats.candidate_edges, f.stats.occluder_faces, f.stats.face_tests, f.stats.intersection_lines,
         f.evaluate_seconds * 1e3, f.render_seconds * 1e3);
     err << line;
   }
+  // Pen plans file by file, as the files were written.
+  for (const std::filesystem::path& file : result.files)
+    for (const FrameRecord& f : result.frames) {
+      if (f.path != file) continue;
+      const PlanStats& s = f.plan;
+      char line[640];
+      std::snprintf(
+          line, sizeof line,
+          "frame %d -> %s: %zu visible pieces (%zu drawing-graph edges after snapping, merging, splitting); "
+          "pen-down %.1f mm, pen-up %.1f mm "
+          "(mean %.1f, median %.1f), %zu lifts (lower bound %zu), plotting ~%.1f s, planned in %.2f ms\n",
+          f.time.frame, file.filename().string().c_str(), f.visible_segments, s.merged_pieces, s.pen_down_mm,
+          s.pen_up_mm, s.pen_up_mean_mm, s.pen_up_median_mm, s.lifts, s.lift_lower_bound, s.plot_seconds,
+          s.planning_ms);
+      err << line;
+    }
 }
 
 std::string join_cameras(const FrameScene& scene) {
@@ -117,7 +89,99 @@ std::string join_cameras(const FrameScene& scene) {
   return out;
 }
 
+// SOURCE_DATE_EPOCH (reproducible-builds.org) fixes the PDF's creation date, so that a rerun gives the
+// same bytes; otherwise cairo writes the current time.
+std::string creation_date_from_environment() {
+  const char* epoch = std::getenv("SOURCE_DATE_EPOCH");
+  if (!epoch || !*epoch) return "";
+  char* end = nullptr;
+  const long long seconds = std::strtoll(epoch, &end, 10);
+  if (*end != '\0' || seconds < 0) return "";
+  const std::time_t t = static_cast<std::time_t>(seconds);
+  std::tm tm{};
+  if (!gmtime_r(&t, &tm)) return "";
+  char buf[32];
+  std::strftime(buf, sizeof buf, "%Y-%m-%dT%H:%M:%SZ", &tm);
+  return buf;
+}
+
+// Load → evaluate frame 0 (animation length, camera, output name) → select frames → the frame pipeline
+// (runtime/frame_pipeline.hpp) → report.
+int run_program(const Program& program, const CliOptions& o, std::ostream& out, std::ostream& err,
+                Clock::time_point start) {
+  const std::string& name = program.main().source->name();
+  try {
+    FrameScene first = program.evaluate(frame_time(0, 1, 24));
+    const int frame_count = first.animation ? first.animation->frames : 1;
+    const double fps = first.animation ? first.animation->fps : 24;
+    const std::vector<int> frames = select_frames(frame_count, o.frames, o.shard);
+
+    PipelineOptions options;
+    options.run.title = name;
+    options.run.frame_count = frame_count;
+    options.run.camera = o.camera;
+    options.run.hidden = o.hidden;
+    options.run.output = o.output;
+    options.run.device = o.device;
+    options.run.device.creation_date = creation_date_from_environment();
+    options.jobs = o.jobs;
+    options.render = o.mode != CliOptions::Mode::Check;
+
+    // Mistakes visible in frame 0 are reported before any rendering: no camera, a bad output name, a
+    // missing directory, one file named for several frames of a one-frame device.
+    const FrameSettings settings0 = resolve_target(first, 0, options.run, program);
+    if (o.output && !has_frame_field(*o.output) && frames.size() > 1 && one_frame_per_file(settings0.target.device))
+      fail_several_frames(settings0.target, frames[0], frames[1], true);
+    try {
+      check_writable(settings0.target);
+    } catch (const DeviceError& e) {
+      return report(err, OutputError(e.what(), settings0.target), program);
+    }
+    if (o.shard && o.shard->count > 1 && o.output && !has_frame_field(*o.output))
+      err << "hlrscript: warning: every shard writes '" << *o.output
+          << "'; put {frame:04} in the name to keep the shards' frames apart\n";
+    if (frames.empty()) {
+      out << name << ": --shard " << o.shard->index << "/" << o.shard->count << " selects none of its "
+          << frame_count << " frames; nothing to do\n";
+      return kExitOk;
+    }
+    const std::string cameras = join_cameras(first);
+    const std::size_t objects = first.scene.objects.size();
+
+    const PipelineResult result = run_pipeline(program, frames, fps, options, std::move(first));
+    print_diagnostics(err, result.warnings, program.sources());
+    if (o.stats && options.render) print_stats(err, result);
+
+    std::size_t faces = 0, segments = 0;
+    for (const FrameRecord& f : result.frames) {
+      faces += f.faces;
+      segments += f.segments;
+    }
+    const std::string files = result.files.front().string() +
+                              (result.files.size() > 1 ? " and " + std::to_string(result.files.size() - 1) + " more files" : "");
+    if (o.mode == CliOptions::Mode::Check) {
+      out << name << ": ok: " << result.frames.size() << (result.frames.size() == 1 ? " frame" : " frames")
+          << " evaluated, " << objects << " objects in frame 0, " << faces << " faces drawn in all, cameras: "
+          << cameras << "; would write " << files << "\n";
+      return kExitOk;
+    }
+    char line[256];
+    std::snprintf(line, sizeof line, ": %zu %s, %zu segments in %.2f s\n", result.frames.size(),
+                  result.frames.size() == 1 ? "frame" : "frames", segments,
+                  std::chrono::duration<double>(Clock::now() - start).count());
+    out << "wrote " << files << line;
+    return kExitOk;
+  } catch (const EvalError& e) {
+    return report(err, e, &program);
+  } catch (const RunError& e) {
+    return report(err, e);
+  } catch (const OutputError& e) {
+    return report(err, e, program);
+  }
+}
+
 int run_script(const CliOptions& o, std::ostream& out, std::ostream& err) {
+  const auto start = Clock::now();
   std::unique_ptr<Program> program;
   try {
     program = Program::load(o.script, o.script);
@@ -129,90 +193,20 @@ int run_script(const CliOptions& o, std::ostream& out, std::ostream& err) {
     print_diagnostics(err, program->syntax_errors(), program->sources());
     return kExitScript;
   }
+  return run_program(*program, o, out, err, start);
+}
 
-  try {
-    FrameScene first = program->evaluate(frame_time(0, 1, 24));
-    const int frame_count = first.animation ? first.animation->frames : 1;
-    const double fps = first.animation ? first.animation->fps : 24;
-    const std::vector<int> frames = select_frames(frame_count, o.frames, o.shard);
-    // Mistakes visible in frame 0 are reported before any rendering.
-    choose_camera(first, o.camera, o.script);
-    if (o.output && !has_frame_field(*o.output)) {
-      // A name without {frame} for several frames: refused now for one-frame devices, not after rendering.
-      std::vector<FrameName> all;
-      for (const int f : frames) all.push_back({f, std::nullopt});
-      plan_outputs(o.output, all, *program);
-    }
-    for (const OutputTarget& t : plan_outputs(o.output, {FrameName{0, first.output}}, *program)) {
-      try {
-        check_writable(t);
-      } catch (const DeviceError& e) {
-        return report(err, e, t, *program);
-      }
-    }
-    if (o.shard && o.shard->count > 1 && o.output && !has_frame_field(*o.output))
-      err << "hlrscript: warning: every shard writes '" << *o.output
-          << "'; put {frame:04} in the name to keep the shards' frames apart\n";
-    if (frames.empty()) {
-      out << o.script << ": --shard " << o.shard->index << "/" << o.shard->count << " selects none of its "
-          << frame_count << " frames; nothing to do\n";
-      return kExitOk;
-    }
-    const std::string cameras = join_cameras(first);
-    const std::size_t objects = first.scene.objects.size();
-
-    RunOptions run;
-    run.camera = o.camera;
-    run.hidden = o.hidden;
-    run.jobs = o.jobs == 0 ? std::max(1U, std::thread::hardware_concurrency()) : o.jobs;
-    run.render = o.mode == CliOptions::Mode::Render;
-    const auto start = std::chrono::steady_clock::now();
-    RunResult result = run_frames(*program, frames, frame_count, fps, run, std::move(first));
-    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    print_diagnostics(err, result.warnings, program->sources());
-
-    std::vector<FrameName> names;
-    for (const FrameOutput& f : result.frames) names.push_back({f.time.frame, f.output});
-    const std::vector<OutputTarget> targets = plan_outputs(o.output, names, *program);
-    if (o.stats && o.mode == CliOptions::Mode::Render) print_stats(err, result.frames);
-
-    std::size_t faces = 0, segments = 0;
-    for (const FrameOutput& f : result.frames) {
-      faces += f.faces;
-      segments += f.segments.size();
-    }
-    if (o.mode == CliOptions::Mode::Check) {
-      out << o.script << ": ok: " << result.frames.size()
-          << (result.frames.size() == 1 ? " frame" : " frames") << " evaluated, " << objects
-          << " objects in frame 0, " << faces << " faces drawn in all, cameras: " << cameras
-          << "; would write " << targets.front().path.string()
-          << (targets.size() > 1 ? " and " + std::to_string(targets.size() - 1) + " more files" : "") << "\n";
-      return kExitOk;
-    }
-
-    WriteOptions write;
-    write.title = o.script;
-    write.frame_count = frame_count;
-    write.device = o.device;
-    for (const OutputTarget& t : targets) {
-      try {
-        const std::vector<WrittenFrame> written = write_output(t, result.frames, write);
-        if (o.stats) print_plan_stats(err, t, written);
-      } catch (const DeviceError& e) {
-        return report(err, e, t, *program);
-      }
-    }
-    char line[256];
-    std::snprintf(line, sizeof line, ": %zu %s, %zu segments in %.2f s\n", result.frames.size(),
-                  result.frames.size() == 1 ? "frame" : "frames", segments, seconds);
-    out << "wrote " << targets.front().path.string()
-        << (targets.size() > 1 ? " and " + std::to_string(targets.size() - 1) + " more files" : "") << line;
-    return kExitOk;
-  } catch (const EvalError& e) {
-    return report(err, e, program.get());
-  } catch (const RunError& e) {
-    return report(err, e);
+// The demo is a built-in script (runtime/demo_script.cpp) on the normal path, to carrier.pdf unless -o.
+int run_demo(CliOptions o, std::ostream& out, std::ostream& err) {
+  const auto start = Clock::now();
+  const auto program = Program::from_text("hlrscript-demo.hls", demo_script(o.demo_frames));
+  if (!program->parsed()) {  // never: the text is ours
+    print_diagnostics(err, program->syntax_errors(), program->sources());
+    return kExitInternal;
   }
+  if (!o.output) o.output = "carrier.pdf";
+  o.frames.reset();
+  return run_program(*program, o, out, err, start);
 }
 
 }  // namespace

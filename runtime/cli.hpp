@@ -29,7 +29,7 @@ struct CliOptions {
   std::optional<FrameRange> frames;
   std::optional<Shard> shard;
   std::optional<bool> hidden;
-  unsigned jobs = 1;
+  unsigned jobs = 0;  // --jobs: threads for frames and the work inside them; 0: one per core
   bool stats = false;
   DeviceOptions device;  // --paper, --margin, --scale, --dpi, --plotter, --pen-order, ...
   int demo_frames = 12;  // --demo --frames N

@@ -28,7 +28,7 @@ po::options_description visible_options() {
        "render frames A to B only (0-based, inclusive)")  //
       ("shard", po::value<std::string>()->value_name("K/N"),
        "render the frames f with f % N == K-1 (job K of N; with --frames, of those)")                       //
-      ("jobs,j", po::value<std::string>()->value_name("N"), "render N frames at a time (0: one per core)")  //
+      ("jobs,j", po::value<std::string>()->value_name("N"), "use N threads for frames and the hidden lines inside them (default 0: one per core)")  //
       ("hidden", po::value<std::string>()->value_name("off|dashed"),
        "hidden lines: off, or dashed (overrides the script)")                       //
       ("stats", "print per-frame statistics (hidden-line and pen plan) to stderr")  //

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <charconv>
 
-#include "runtime/frame_runner.hpp"
+#include "runtime/run_error.hpp"
 #include "runtime/limits.hpp"
 
 namespace hlr::runtime {

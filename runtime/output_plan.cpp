@@ -5,48 +5,13 @@
 #include <cstdio>
 #include <map>
 
+#include "core/device/atomic_file.hpp"
 #include "runtime/eval_error.hpp"
 #include "runtime/format_value.hpp"
 
 namespace hlr::runtime {
 
 namespace fs = std::filesystem;
-
-const char* supported_extensions() { return "pdf, svg, png, hpgl (or .plt), steps, json"; }
-
-std::optional<Device> device_for(const fs::path& path) {
-  std::string ext = path.extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
-  if (ext == ".pdf") return Device::Pdf;
-  if (ext == ".svg") return Device::Svg;
-  if (ext == ".png") return Device::Png;
-  if (ext == ".hpgl" || ext == ".plt" || ext == ".hpg") return Device::Hpgl;
-  if (ext == ".steps") return Device::Steps;
-  if (ext == ".json") return Device::Json;
-  return std::nullopt;
-}
-
-bool single_frame(Device device) {
-  return device == Device::Svg || device == Device::Png || device == Device::Hpgl || device == Device::Steps;
-}
-
-const char* device_name(Device device) {
-  switch (device) {
-    case Device::Pdf:
-      return "PDF";
-    case Device::Svg:
-      return "SVG";
-    case Device::Png:
-      return "PNG";
-    case Device::Hpgl:
-      return "HPGL";
-    case Device::Steps:
-      return "plotter-steps";
-    case Device::Json:
-      return "JSON";
-  }
-  return "?";
-}
 
 bool has_frame_field(const std::string& pattern) { return pattern.find('{') != std::string::npos; }
 
@@ -88,7 +53,7 @@ fs::path canonical_or_absolute(const fs::path& p) {
 
 // Why `path` cannot be an output, or "".
 std::string output_problem(const fs::path& path, const Program& program) {
-  if (!device_for(path))
+  if (!device_kind_for(path))
     return "'" + path.string() + "': unknown output type '" + path.extension().string() +
            "'; supported: " + supported_extensions();
   const fs::path target = canonical_or_absolute(path);
@@ -100,51 +65,66 @@ std::string output_problem(const fs::path& path, const Program& program) {
 
 }  // namespace
 
+OutputTarget target_for_frame(const std::optional<std::string>& cli_pattern, const FrameName& frame,
+                              std::size_t index, const Program& program) {
+  const std::string hint =
+      "choose a name ending in .pdf, .svg, .png, .hpgl, .steps or .json that is not an input file";
+  OutputTarget target;
+  if (cli_pattern) {
+    target.path = has_frame_field(*cli_pattern) ? substitute_frame(*cli_pattern, frame.frame) : *cli_pattern;
+    const std::string problem = output_problem(target.path, program);
+    if (!problem.empty()) throw RunError("-o " + problem, hint, 64);
+  } else if (frame.script_output) {
+    target.path = frame.script_output->name;
+    const std::string problem = output_problem(target.path, program);
+    if (!problem.empty()) fail(frame.script_output->span, "output " + problem, hint);
+    target.span = frame.script_output->span;
+  } else {
+    target.path = fs::path(program.main().source->name()).stem().string() + ".pdf";
+    const std::string problem = output_problem(target.path, program);
+    if (!problem.empty()) throw RunError(problem, "name the output with -o OUT.pdf", 64);
+  }
+  target.device = *device_kind_for(target.path);
+  target.frames = {index};
+  return target;
+}
+
+void fail_several_frames(const OutputTarget& target, int frame_a, int frame_b, bool from_cli) {
+  const fs::path& path = target.path;
+  const std::string message = "'" + path.string() + "' would hold several frames (" + std::to_string(frame_a) +
+                              " and " + std::to_string(frame_b) + "), but one " + device_kind_name(target.device) +
+                              " file holds one frame";
+  const std::string hint = "put {frame:03} in the name to write one file per frame, e.g. '" +
+                           path.stem().string() + "-{frame:03}" + path.extension().string() + "'";
+  if (target.span) fail(*target.span, "output " + message, hint);
+  throw RunError((from_cli ? "-o " : "") + message, hint, 64);
+}
+
 std::vector<OutputTarget> plan_outputs(const std::optional<std::string>& cli_pattern,
                                        const std::vector<FrameName>& frames, const Program& program) {
   std::vector<OutputTarget> targets;
   std::map<fs::path, std::size_t> by_path;
-  const fs::path fallback = fs::path(program.main().source->name()).stem().string() + ".pdf";
   for (std::size_t i = 0; i < frames.size(); ++i) {
-    fs::path path;
-    std::string problem;
-    if (cli_pattern) {
-      path = has_frame_field(*cli_pattern) ? substitute_frame(*cli_pattern, frames[i].frame) : *cli_pattern;
-      problem = output_problem(path, program);
-      if (!problem.empty())
-        throw RunError(
-            "-o " + problem,
-            "choose a name ending in .pdf, .svg, .png, .hpgl, .steps or .json that is not an input file", 64);
-    } else if (frames[i].script_output) {
-      path = frames[i].script_output->name;
-      problem = output_problem(path, program);
-      if (!problem.empty())
-        fail(frames[i].script_output->span, "output " + problem,
-             "choose a name ending in .pdf, .svg, .png, .hpgl, .steps or .json that is not an input file");
-    } else {
-      path = fallback;
-      problem = output_problem(path, program);
-      if (!problem.empty()) throw RunError(problem, "name the output with -o OUT.pdf", 64);
-    }
-    const auto [it, added] = by_path.emplace(path, targets.size());
+    OutputTarget t = target_for_frame(cli_pattern, frames[i], i, program);
+    const auto [it, added] = by_path.emplace(t.path, targets.size());
     if (added) {
-      targets.push_back({path, *device_for(path), {}, std::nullopt});
-      if (!cli_pattern && frames[i].script_output) targets.back().span = frames[i].script_output->span;
+      targets.push_back(std::move(t));
+      continue;
     }
     OutputTarget& target = targets[it->second];
+    if (one_frame_per_file(target.device))
+      fail_several_frames(target, frames[target.frames[0]].frame, frames[i].frame, cli_pattern.has_value());
     target.frames.push_back(i);
-    if (target.frames.size() == 2 && single_frame(target.device)) {
-      const std::string message = "'" + path.string() + "' would hold several frames (" +
-                                  std::to_string(frames[target.frames[0]].frame) + " and " +
-                                  std::to_string(frames[i].frame) + "), but one " +
-                                  device_name(target.device) + " file holds one frame";
-      const std::string hint = "put {frame:03} in the name to write one file per frame, e.g. '" +
-                               path.stem().string() + "-{frame:03}" + path.extension().string() + "'";
-      if (target.span) fail(*target.span, "output " + message, hint);
-      throw RunError((cli_pattern ? "-o " : "") + message, hint, 64);
-    }
   }
   return targets;
+}
+
+void check_writable(const OutputTarget& target) {
+  const fs::path dir = target.path.has_parent_path() ? target.path.parent_path() : fs::path(".");
+  std::error_code ec;
+  if (!fs::is_directory(dir, ec))  // worded as write_atomically() words it
+    throw DeviceError("cannot write '" + target.path.string() + "': directory '" + dir.string() +
+                      "' does not exist");
 }
 
 }  // namespace hlr::runtime

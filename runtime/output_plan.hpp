@@ -3,8 +3,7 @@
 // directory. Frames whose names are equal share one file (PDF pages, JSON frames) in frame order; a
 // name that differs per frame gives one file per frame. The extension picks the device; SVG, PNG and
 // HPGL hold one frame per file, so several frames sharing such a name is an error that asks for
-// {frame:03} in the name. Writing (runtime/output_writer.cpp) lays every frame out on its page, plans the
-// pen strokes once and hands the same strokes to the device.
+// {frame:03} in the name. runtime/frame_pipeline.cpp writes them.
 #pragma once
 
 #include <filesystem>
@@ -12,21 +11,17 @@
 #include <string>
 #include <vector>
 
+#include "core/device/device.hpp"
 #include "core/plan/pen_plan.hpp"
-#include "runtime/frame_runner.hpp"
+#include "runtime/frame_scene.hpp"
+#include "runtime/run_error.hpp"
 #include "runtime/program.hpp"
 
 namespace hlr::runtime {
 
-enum class Device { Pdf, Svg, Png, Hpgl, Steps, Json };
-
-// Devices that hold a single frame per file.
-bool single_frame(Device device);
-const char* device_name(Device device);  // "PDF", "SVG", ...
-
 struct OutputTarget {
   std::filesystem::path path;
-  Device device = Device::Pdf;
+  DeviceKind device = DeviceKind::Pdf;
   std::vector<std::size_t> frames;       // indices into the frames given to plan_outputs, in order
   std::optional<lang::SourceSpan> span;  // the script's `output` name, when the path comes from it
 };
@@ -36,14 +31,18 @@ struct FrameName {
   std::optional<OutputSetting> script_output;
 };
 
-// "pdf, svg, png, hpgl (or .plt), steps, json": for messages.
-const char* supported_extensions();
-std::optional<Device> device_for(const std::filesystem::path& path);
-
 // True when an -o pattern has a {frame...} field.
 bool has_frame_field(const std::string& pattern);
 // The -o pattern with {frame} / {frame:FMT} replaced; throws RunError (exit 64) for any other {...}.
 std::string substitute_frame(const std::string& pattern, int frame);
+
+// The file one frame goes to (frames = {index}). Throws as plan_outputs() does.
+OutputTarget target_for_frame(const std::optional<std::string>& cli_pattern, const FrameName& frame,
+                              std::size_t index, const Program& program);
+
+// The error for two frames sent to a file that holds one frame: at the script's output statement when
+// the name came from there (EvalError), else RunError 64.
+[[noreturn]] void fail_several_frames(const OutputTarget& target, int frame_a, int frame_b, bool from_cli);
 
 // Groups frames by file. A bad -o (unknown extension, the input script itself) throws RunError with exit
 // 64; the same mistake in the script's output statement throws EvalError at its span.
@@ -65,26 +64,10 @@ struct DeviceOptions {
   std::optional<bool> relative;              // --hpgl-moves relative|absolute
   PenOrder pen_order = PenOrder::Optimized;  // --pen-order
   double plan_budget_ms = 200;               // --plan-budget (per frame, Optimized only)
-};
-
-struct WriteOptions {
-  std::string title;    // PDF metadata and captions: the script's name
-  int frame_count = 1;  // of the animation, for captions
-  DeviceOptions device;
-};
-
-// What writing a target drew, frame by frame: for --stats.
-struct WrittenFrame {
-  int frame = 0;
-  PlanStats plan;
-  std::size_t visible_segments = 0;
+  std::string creation_date;                 // PDF metadata: SOURCE_DATE_EPOCH when set, else now
 };
 
 // Throws DeviceError when the target's directory does not exist: checked before any frame is rendered.
 void check_writable(const OutputTarget& target);
-// Writes one target atomically. Throws DeviceError; a script mistake found only now (an unknown plotter
-// named by the output statement) throws EvalError at its span, a CLI one RunError (64).
-std::vector<WrittenFrame> write_output(const OutputTarget& target, const std::vector<FrameOutput>& frames,
-                                       const WriteOptions& options);
 
 }  // namespace hlr::runtime

@@ -6,6 +6,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <fstream>
+#include <memory>
 #include <span>
 #include <sstream>
 #include <stdexcept>
@@ -60,27 +62,28 @@ void check(cairo_status_t status) {
     throw std::runtime_error(std::string("cairo: ") + cairo_status_to_string(status));
 }
 
-// Everything that can be wrong with the input is found before any file exists.
+// Everything that can be wrong with a page is found before any file exists.
+void validate_page(const PlotPage& page, const CairoOptions& o, const std::string& where) {
+  try {
+    check_page_spec(PageSpec{{page.width_mm, page.height_mm}, page.margin_mm});
+  } catch (const DeviceError& e) {
+    throw DeviceError(where + e.what());
+  }
+  for (std::size_t s = 0; s < page.strokes.size(); ++s)
+    for (const Point2& p : page.strokes[s].points)
+      if (!std::isfinite(p.x) || !std::isfinite(p.y))
+        throw DeviceError(where + "stroke " + std::to_string(s + 1) + " has a non-finite point");
+  if (o.format == CairoFormat::Png) (void)png_pixel_size(page, o.dpi);
+}
+
 void validate(const std::vector<PlotPage>& pages, const CairoOptions& o) {
   if (pages.empty()) throw DeviceError("nothing to draw: no pages");
   if (o.format != CairoFormat::Pdf && pages.size() > 1)
     throw DeviceError(std::string("a ") + format_name(o.format) + " file holds one page, got " +
                       std::to_string(pages.size()) +
                       "; put a {frame} pattern in the output name to write one file per frame");
-  for (std::size_t i = 0; i < pages.size(); ++i) {
-    const PlotPage& page = pages[i];
-    const std::string where = pages.size() > 1 ? "page " + std::to_string(i + 1) + ": " : "";
-    try {
-      check_page_spec(PageSpec{{page.width_mm, page.height_mm}, page.margin_mm});
-    } catch (const DeviceError& e) {
-      throw DeviceError(where + e.what());
-    }
-    for (std::size_t s = 0; s < page.strokes.size(); ++s)
-      for (const Point2& p : page.strokes[s].points)
-        if (!std::isfinite(p.x) || !std::isfinite(p.y))
-          throw DeviceError(where + "stroke " + std::to_string(s + 1) + " has a non-finite point");
-    if (o.format == CairoFormat::Png) (void)png_pixel_size(page, o.dpi);
-  }
+  for (std::size_t i = 0; i < pages.size(); ++i)
+    validate_page(pages[i], o, pages.size() > 1 ? "page " + std::to_string(i + 1) + ": " : "");
 }
 
 // Clips the segment a→b to `box` (core/geometry/clip2d.hpp), false when nothing of it is inside.
@@ -199,7 +202,7 @@ void draw_page(cairo_t* cr, const PlotPage& page, const CairoOptions& o, double 
 }
 
 // Draws every page on `surface` (one show_page each), finishes it and throws on any cairo error.
-// `before_page` runs before each page is drawn (the PDF sets the page size there).
+// `before_page` runs before each page is drawn (the PNG paints its background there).
 template <typename BeforePage>
 void draw_all(cairo_surface_t* surface, std::span<const PlotPage> pages, const CairoOptions& o,
               double units_per_mm, BeforePage before_page) {
@@ -219,27 +222,22 @@ void draw_all(cairo_surface_t* surface, std::span<const PlotPage> pages, const C
   }
 }
 
-void write_pdf_file(const std::filesystem::path& temp, const std::vector<PlotPage>& pages,
-                    const CairoOptions& o) {
-  SurfaceRef surface{cairo_pdf_surface_create(temp.c_str(), pages[0].width_mm * kPointsPerMm,
-                                              pages[0].height_mm * kPointsPerMm)};
-  check(cairo_surface_status(surface.p));
-  if (!o.title.empty()) cairo_pdf_surface_set_metadata(surface.p, CAIRO_PDF_METADATA_TITLE, o.title.c_str());
-  cairo_pdf_surface_set_metadata(surface.p, CAIRO_PDF_METADATA_CREATOR, "hlrscript");
-  draw_all(surface.p, pages, o, kPointsPerMm, [&](cairo_t*, const PlotPage& page) {
-    cairo_pdf_surface_set_size(surface.p, page.width_mm * kPointsPerMm, page.height_mm * kPointsPerMm);
-  });
+cairo_status_t append_to_string(void* closure, const unsigned char* data, unsigned int length) {
+  static_cast<std::string*>(closure)->append(reinterpret_cast<const char*>(data), length);
+  return CAIRO_STATUS_SUCCESS;
 }
 
-void write_svg_file(const std::filesystem::path& temp, const PlotPage& page, const CairoOptions& o) {
+std::string svg_bytes(const PlotPage& page, const CairoOptions& o) {
+  std::string bytes;
   // In cairo ≥ 1.16 the document unit makes the size given here millimetres and one user unit 1 mm.
-  SurfaceRef surface{cairo_svg_surface_create(temp.c_str(), page.width_mm, page.height_mm)};
+  SurfaceRef surface{cairo_svg_surface_create_for_stream(append_to_string, &bytes, page.width_mm, page.height_mm)};
   check(cairo_surface_status(surface.p));
   cairo_svg_surface_set_document_unit(surface.p, CAIRO_SVG_UNIT_MM);
   draw_all(surface.p, std::span(&page, 1), o, 1, [](cairo_t*, const PlotPage&) {});
+  return bytes;
 }
 
-void write_png_file(const std::filesystem::path& temp, const PlotPage& page, const CairoOptions& o) {
+std::string png_bytes(const PlotPage& page, const CairoOptions& o) {
   const PixelSize size = png_pixel_size(page, o.dpi);
   SurfaceRef surface{cairo_image_surface_create(CAIRO_FORMAT_ARGB32, static_cast<int>(size.width),
                                                 static_cast<int>(size.height))};
@@ -249,7 +247,17 @@ void write_png_file(const std::filesystem::path& temp, const PlotPage& page, con
     cairo_paint(cr);
   });
   cairo_surface_flush(surface.p);
-  check(cairo_surface_write_to_png(surface.p, temp.c_str()));
+  std::string bytes;
+  check(cairo_surface_write_to_png_stream(surface.p, append_to_string, &bytes));
+  return bytes;
+}
+
+void write_bytes(const std::filesystem::path& path, const std::string& bytes) {
+  std::ofstream out(path, std::ios::binary | std::ios::trunc);
+  if (!out) throw std::runtime_error("cannot create '" + path.string() + "'");
+  out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+  out.close();
+  if (!out) throw std::runtime_error("write to '" + path.string() + "' failed");
 }
 
 char lower(char c) { return c >= 'A' && c <= 'Z' ? static_cast<char>(c - 'A' + 'a') : c; }
@@ -283,6 +291,67 @@ PixelSize png_pixel_size(const PlotPage& page, double dpi) {
   return {static_cast<long>(pw), static_cast<long>(ph)};
 }
 
+void check_cairo_page(const PlotPage& page, const CairoOptions& o) { validate_page(page, o, ""); }
+
+std::string cairo_page_bytes(const PlotPage& page, const CairoOptions& o) {
+  if (o.format == CairoFormat::Pdf) throw DeviceError("cairo_page_bytes: PDF is written by CairoPdfWriter");
+  validate_page(page, o, "");
+  try {
+    return o.format == CairoFormat::Svg ? svg_bytes(page, o) : png_bytes(page, o);
+  } catch (const std::runtime_error& e) {
+    throw DeviceError(e.what());
+  }
+}
+
+struct CairoPdfWriter::State {
+  CairoOptions options;
+  SurfaceRef surface{nullptr};
+  ContextRef cr{nullptr};
+};
+
+CairoPdfWriter::CairoPdfWriter(const std::filesystem::path& path, const CairoOptions& o)
+    : s_(std::make_unique<State>()) {
+  s_->options = o;
+  s_->options.format = CairoFormat::Pdf;
+  // The size is set again before every page is drawn.
+  s_->surface.p = cairo_pdf_surface_create(path.c_str(), 297 * kPointsPerMm, 210 * kPointsPerMm);
+  try {
+    check(cairo_surface_status(s_->surface.p));
+  } catch (const std::runtime_error& e) {
+    throw DeviceError(e.what());
+  }
+  if (!o.title.empty()) cairo_pdf_surface_set_metadata(s_->surface.p, CAIRO_PDF_METADATA_TITLE, o.title.c_str());
+  cairo_pdf_surface_set_metadata(s_->surface.p, CAIRO_PDF_METADATA_CREATOR, "hlrscript");
+  if (!o.creation_date.empty())
+    cairo_pdf_surface_set_metadata(s_->surface.p, CAIRO_PDF_METADATA_CREATE_DATE, o.creation_date.c_str());
+  s_->cr.p = cairo_create(s_->surface.p);
+}
+
+CairoPdfWriter::~CairoPdfWriter() = default;
+
+void CairoPdfWriter::add_page(const PlotPage& page) {
+  validate_page(page, s_->options, "");
+  cairo_pdf_surface_set_size(s_->surface.p, page.width_mm * kPointsPerMm, page.height_mm * kPointsPerMm);
+  draw_page(s_->cr.p, page, s_->options, kPointsPerMm);
+  cairo_show_page(s_->cr.p);
+  try {
+    check(cairo_status(s_->cr.p));
+  } catch (const std::runtime_error& e) {
+    throw DeviceError(e.what());
+  }
+}
+
+void CairoPdfWriter::finish() {
+  cairo_destroy(s_->cr.p);
+  s_->cr.p = nullptr;
+  cairo_surface_finish(s_->surface.p);  // writes the file's tail; errors surface here
+  try {
+    check(cairo_surface_status(s_->surface.p));
+  } catch (const std::runtime_error& e) {
+    throw DeviceError(e.what());
+  }
+}
+
 void write_cairo(const std::filesystem::path& target, const std::vector<PlotPage>& pages,
                  const CairoOptions& o) {
   try {
@@ -291,16 +360,12 @@ void write_cairo(const std::filesystem::path& target, const std::vector<PlotPage
     throw DeviceError("cannot write '" + target.string() + "': " + e.what());
   }
   write_atomically(target, [&](const std::filesystem::path& temp) {
-    switch (o.format) {
-      case CairoFormat::Pdf:
-        write_pdf_file(temp, pages, o);
-        break;
-      case CairoFormat::Svg:
-        write_svg_file(temp, pages[0], o);
-        break;
-      case CairoFormat::Png:
-        write_png_file(temp, pages[0], o);
-        break;
+    if (o.format == CairoFormat::Pdf) {
+      CairoPdfWriter pdf(temp, o);
+      for (const PlotPage& page : pages) pdf.add_page(page);
+      pdf.finish();
+    } else {
+      write_bytes(temp, o.format == CairoFormat::Svg ? svg_bytes(pages[0], o) : png_bytes(pages[0], o));
     }
   });
 }

@@ -17,7 +17,9 @@
 // at the target and an existing file there is unchanged.
 #pragma once
 
+#include <cstddef>
 #include <filesystem>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -34,6 +36,7 @@ struct CairoOptions {
   PenTable pens;
   double dpi = 150;              // PNG only
   std::string title;             // PDF metadata
+  std::string creation_date;     // PDF metadata, ISO 8601 ("2026-12-01T12:00:00Z"); empty: now
   bool decorations = true;       // border and caption
   bool white_background = true;  // PNG only; transparent otherwise
 };
@@ -53,5 +56,27 @@ PixelSize png_pixel_size(const PlotPage& page, double dpi);
 
 void write_cairo(const std::filesystem::path& target, const std::vector<PlotPage>& pages,
                  const CairoOptions& options);
+
+// Throws DeviceError for a page write_cairo would refuse (bad size, non-finite point, PNG too large).
+void check_cairo_page(const PlotPage& page, const CairoOptions& options);
+
+// One page as the bytes of an SVG or PNG file (options.format). Throws DeviceError as write_cairo does.
+std::string cairo_page_bytes(const PlotPage& page, const CairoOptions& options);
+
+// A PDF written page by page at `path` (not atomically: the caller renames it into place). Throws
+// DeviceError for a page write_cairo would refuse or a cairo error.
+class CairoPdfWriter {
+ public:
+  CairoPdfWriter(const std::filesystem::path& path, const CairoOptions& options);
+  ~CairoPdfWriter();
+  CairoPdfWriter(const CairoPdfWriter&) = delete;
+  CairoPdfWriter& operator=(const CairoPdfWriter&) = delete;
+  void add_page(const PlotPage& page);
+  void finish();
+
+ private:
+  struct State;
+  std::unique_ptr<State> s_;
+};
 
 }  // namespace hlr

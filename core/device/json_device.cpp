@@ -190,14 +190,12 @@ void write_pretty(const Json& v, int indent, std::string& out) {
 
 }  // namespace
 
-std::string to_json_text(const std::vector<JsonFrame>& frames, const JsonOptions& options) {
+namespace {
+
+Json document_head(const PlotPage& page, const JsonOptions& options) {
   Json doc;
   doc["format"] = kJsonLinesFormat;
   if (!options.title.empty()) doc["title"] = options.title;
-  // Every frame of one file shares the page (the runtime groups frames by file and paper); without a
-  // frame the default page is reported.
-  const PlotPage default_page;
-  const PlotPage& page = frames.empty() ? default_page : frames.front().plot.page;
   // A non-finite or roomless page would print as null or describe no drawable area.
   check_page_spec({{page.width_mm, page.height_mm}, page.margin_mm});
   doc["page"] = {{"width_mm", page.width_mm},
@@ -205,21 +203,60 @@ std::string to_json_text(const std::vector<JsonFrame>& frames, const JsonOptions
                  {"margin_mm", page.margin_mm},
                  {"origin", "top-left"},
                  {"y", "down"}};
-  Json list = Json::array();
-  for (const JsonFrame& f : frames) list.push_back(FrameWriter(f, options).build());
-  doc["frames"] = std::move(list);
+  return doc;
+}
+
+// Invalid UTF-8 in a name or title throws here rather than writing a file no reader accepts.
+std::string encode(const Json& v, bool pretty, int indent) {
   std::string text;
   try {
-    // Invalid UTF-8 in a name or title throws here rather than writing a file no reader accepts.
-    if (options.pretty)
-      write_pretty(doc, 0, text);
+    if (pretty)
+      write_pretty(v, indent, text);
     else
-      text = doc.dump();
+      text = v.dump();
   } catch (const nlohmann::json::exception& e) {
     throw DeviceError(std::string("cannot encode JSON: ") + e.what());
   }
-  text += '\n';
   return text;
+}
+
+}  // namespace
+
+// The document is written in pieces so that frames can be encoded apart and streamed: the head (every
+// key before "frames", which comes last), each frame, the tail. Joined, they are exactly the text
+// write_pretty() or dump() gives for the whole document.
+std::string json_document_head(const PlotPage& first_page, const JsonOptions& options) {
+  std::string text = encode(document_head(first_page, options), options.pretty, 0);
+  text.pop_back();  // the closing brace
+  if (options.pretty) {
+    text.pop_back();  // and the newline before it
+    return text + ",\n  \"frames\": [";
+  }
+  return text + ",\"frames\":[";
+}
+
+std::string json_frame_text(const JsonFrame& frame, const JsonOptions& options) {
+  return encode(FrameWriter(frame, options).build(), options.pretty, 4);
+}
+
+std::string json_frame_separator(bool first, const JsonOptions& options) {
+  if (options.pretty) return first ? "\n    " : ",\n    ";
+  return first ? "" : ",";
+}
+
+std::string json_document_tail(std::size_t frames, const JsonOptions& options) {
+  if (!options.pretty) return "]}\n";
+  return frames == 0 ? "]\n}\n" : "\n  ]\n}\n";
+}
+
+std::string to_json_text(const std::vector<JsonFrame>& frames, const JsonOptions& options) {
+  // Every frame of one file shares the page (the runtime groups frames by file and paper); without a
+  // frame the default page is reported.
+  const PlotPage default_page;
+  std::string text = json_document_head(frames.empty() ? default_page : frames.front().plot.page, options);
+  for (std::size_t i = 0; i < frames.size(); ++i)
+    text += json_frame_separator(i == 0, options) + json_frame_text(frames[i], options);
+  return text + json_document_tail(frames.size(), options);
 }
 
 void write_json(const std::filesystem::path& target, const std::vector<JsonFrame>& frames,

@@ -76,6 +76,13 @@ struct JsonOptions {
 // (check_page_spec), or a name or title that is not valid UTF-8.
 std::string to_json_text(const std::vector<JsonFrame>& frames, const JsonOptions& options);
 
+// to_json_text() in pieces, for writing frame by frame: head + Σ (separator(i == 0) + frame_text) +
+// tail(count) is to_json_text()'s text. The head describes the first frame's page.
+std::string json_document_head(const PlotPage& first_page, const JsonOptions& options);
+std::string json_frame_text(const JsonFrame& frame, const JsonOptions& options);
+std::string json_frame_separator(bool first, const JsonOptions& options);
+std::string json_document_tail(std::size_t frames, const JsonOptions& options);
+
 // Atomic (core/device/atomic_file.hpp): on any error nothing is left at `target`, and DeviceError names it.
 void write_json(const std::filesystem::path& target, const std::vector<JsonFrame>& frames,
                 const JsonOptions& options);

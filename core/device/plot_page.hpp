@@ -13,18 +13,9 @@
 
 #include "core/geometry/rect2.hpp"
 #include "core/geometry/vector.hpp"
+#include "core/plan/plot_stroke.hpp"
 
 namespace hlr {
-
-// Hidden strokes exist only when the hidden layer is on; cairo devices dash them, HPGL gives them their
-// own pen (PlotStroke::pen).
-enum class StrokeLayer { Visible, Hidden };
-
-struct PlotStroke {
-  std::vector<Point2> points;  // at least two; consecutive points differ
-  int pen = 1;                 // 1-based pen (colour, width; the HPGL `SP` number)
-  StrokeLayer layer = StrokeLayer::Visible;
-};
 
 struct PlotPage {
   double width_mm = 297;  // A4 landscape

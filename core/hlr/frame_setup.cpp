@@ -1,11 +1,10 @@
 #include "core/hlr/frame_setup.hpp"
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
-#include <thread>
 
 #include "core/hlr/intersection_lines.hpp"
+#include "core/parallel.hpp"
 #include "core/tolerance.hpp"
 
 namespace hlr {
@@ -285,10 +284,9 @@ FrameSetup prepare_frame(const Scene& scene, const Camera& camera, bool intersec
   const std::size_t chunk = std::max<std::size_t>(1, n / 64);
   const std::size_t chunks = (n + chunk - 1) / chunk;
   std::vector<FrameSetup> parts(chunks);
-  std::atomic<std::size_t> next{0};
-  auto run = [&] {
+  parallel_chunks(chunks, threads, [&](std::size_t k) {
     std::vector<Point3> view_vertices;
-    for (std::size_t k; (k = next.fetch_add(1)) < chunks;) {
+    {
       FrameSetup& part = parts[k];
       for (std::size_t o = k * chunk; o < std::min(n, (k + 1) * chunk); ++o) {
         const Solid& solid = scene.objects[o].solid;
@@ -314,14 +312,7 @@ FrameSetup prepare_frame(const Scene& scene, const Camera& camera, bool intersec
       part.occluders.shrink_to_fit();
       part.candidates.shrink_to_fit();
     }
-  };
-  threads = std::min<std::size_t>(threads ? threads : std::max(1u, std::thread::hardware_concurrency()), chunks);
-  if (threads <= 1) {
-    run();
-  } else {
-    std::vector<std::jthread> pool;
-    for (unsigned t = 0; t < threads; ++t) pool.emplace_back(run);
-  }
+  });
   std::size_t points = 0, rings = 0, occluders = 0, candidates = 0;
   for (const FrameSetup& part : parts) {
     points += part.polygon_points.size();

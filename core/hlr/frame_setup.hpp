@@ -66,7 +66,7 @@ struct FrameSetup {
 void set_picture_tolerance(Candidate& c, const Camera& camera, double length_tolerance);
 
 // Culled candidates (hidden by the back-face rules alone) are kept only when `keep_culled` is set.
-// Objects are prepared on up to `threads` threads (0: all hardware threads).
+// Objects are prepared in parallel as core/parallel.hpp's `threads` says (0: the caller's arena).
 FrameSetup prepare_frame(const Scene& scene, const Camera& camera, bool intersection_lines, bool keep_culled,
                          unsigned threads = 0);
 

@@ -2,14 +2,15 @@
 
 #include <algorithm>
 #include <memory>
-#include <atomic>
 #include <optional>
-#include <thread>
+
+#include <tbb/enumerable_thread_specific.h>
 
 #include "core/geometry/clip2d.hpp"
 #include "core/hlr/face_grid.hpp"
 #include "core/hlr/frame_setup.hpp"
 #include "core/hlr/occlusion.hpp"
+#include "core/parallel.hpp"
 
 namespace hlr {
 namespace {
@@ -45,6 +46,7 @@ struct Worker {
   OcclusionScratch scratch;
   IntervalSet hidden;
   std::size_t face_tests = 0;
+  std::vector<VisibleSegment> buffer;  // the current chunk's pieces
 
   Point2 picture_point(const Candidate& c, double t) const {
     return lerp(c.pic0, c.pic1, picture_param(c, camera, t));
@@ -129,30 +131,25 @@ FrameResult render_frame(const Scene& scene, const Camera& camera, const HlrOpti
   const auto n = static_cast<std::uint32_t>(setup.candidates.size());
   const std::uint32_t chunks = (n + kChunk - 1) / kChunk;
   std::vector<std::vector<VisibleSegment>> outputs(chunks);
-  unsigned threads = options.threads ? options.threads : std::max(1u, std::thread::hardware_concurrency());
-  threads = std::min<unsigned>(threads, chunks);
-  std::atomic<std::uint32_t> next{0};
-  std::atomic<std::size_t> face_tests{0};
   const Affine3 world_from_view = camera.viewFromWorld.inverse();
-  auto run = [&] {
-    Worker w{setup, camera, *grid, options, world_from_view, std::vector<std::uint32_t>(setup.occluders.size(), 0), {}, {}, 0};
-    // Each chunk's pieces go through one reused buffer and are stored at their exact size: growing every
-    // chunk's vector by doubling would hold up to twice the output in slack at the frame's peak.
-    std::vector<VisibleSegment> buffer;
-    for (std::uint32_t k; (k = next.fetch_add(1)) < chunks;) {
-      const std::uint32_t end = std::min(n, (k + 1) * kChunk);
-      buffer.clear();
-      for (std::uint32_t i = k * kChunk; i < end; ++i) w.process(i, buffer);
-      outputs[k].assign(buffer.begin(), buffer.end());
-    }
-    face_tests += w.face_tests;
-  };
-  if (threads <= 1) {
-    run();
-  } else {
-    std::vector<std::jthread> pool;
-    for (unsigned t = 0; t < threads; ++t) pool.emplace_back(run);
-  }
+  // One worker (scratch buffers, stamps) per thread that takes part; chunks go to whichever is free.
+  tbb::enumerable_thread_specific<Worker> workers([&] {
+    return Worker{setup, camera, *grid, options, world_from_view,
+                  std::vector<std::uint32_t>(setup.occluders.size(), 0), {}, {}, 0, {}};
+  });
+  parallel_chunks(chunks, options.threads, [&](std::size_t k) {
+    Worker& w = workers.local();
+    // Each chunk's pieces are gathered in the worker's buffer and stored at their exact size: growing
+    // every chunk's vector by doubling would hold up to twice the output in slack at the frame's peak.
+    std::vector<VisibleSegment>& buffer = w.buffer;
+    buffer.clear();
+    const auto first = static_cast<std::uint32_t>(k) * kChunk;
+    const std::uint32_t end = std::min(n, first + kChunk);
+    for (std::uint32_t i = first; i < end; ++i) w.process(i, buffer);
+    outputs[k].assign(buffer.begin(), buffer.end());
+  });
+  std::size_t face_tests = 0;
+  for (const Worker& w : workers) face_tests += w.face_tests;
   // The inputs are no longer needed; free them before the join, which briefly holds the output twice.
   grid.reset();
   setup = FrameSetup{};

@@ -14,7 +14,7 @@ namespace hlr {
 struct HlrOptions {
   bool include_hidden = false;      // also return hidden pieces (hidden = true), for a dashed layer
   bool intersection_lines = true;   // draw where faces of different solids cross
-  unsigned threads = 0;             // 0: all hardware threads
+  unsigned threads = 0;  // 0: the caller's task arena (every core unless --jobs bounds it); 1: this thread
 };
 
 FrameResult render_frame(const Scene& scene, const Camera& camera, const HlrOptions& options = {});

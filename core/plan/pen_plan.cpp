@@ -6,8 +6,9 @@
 #include <exception>
 #include <map>
 #include <stdexcept>
-#include <thread>
 #include <utility>
+
+#include <tbb/parallel_invoke.h>
 
 #include "core/plan/euler_strokes.hpp"
 #include "core/plan/odd_matching.hpp"
@@ -230,28 +231,17 @@ PenPlan plan_pen_strokes(const std::vector<PlotPiece>& pieces, const PlanOptions
         std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double, std::milli>(budget_ms));
     Sequence chosen;
     if (options.order == PenOrder::Optimized) {
-      // The greedy plan, for the never-worse-than-Greedy guarantee: on a second thread when allowed.
-      std::exception_ptr failed;
-      std::thread greedy;
-      if (options.threads >= 2)
-        greedy = std::thread([&] {
-          try {
-            chosen = plan_sequence(groups, home, false, budget);
-          } catch (...) {
-            failed = std::current_exception();
-          }
-        });
-      else
-        chosen = plan_sequence(groups, home, false, budget);
+      // The greedy plan, for the never-worse-than-Greedy guarantee: built beside the optimized one when
+      // allowed (as a task of the caller's arena).
       Sequence optimized;
-      try {
-        optimized = plan_sequence(groups, home, true, budget);
-      } catch (...) {
-        if (greedy.joinable()) greedy.join();
-        throw;
+      auto greedy = [&] { chosen = plan_sequence(groups, home, false, budget); };
+      auto best = [&] { optimized = plan_sequence(groups, home, true, budget); };
+      if (options.threads >= 2) {
+        tbb::parallel_invoke(greedy, best);
+      } else {
+        greedy();
+        best();
       }
-      if (greedy.joinable()) greedy.join();
-      if (failed) std::rethrow_exception(failed);
       st.improvement_moves = optimized.moves;
       st.budget_exhausted = optimized.deadline_hit;
       if (optimized.travel <= chosen.travel)

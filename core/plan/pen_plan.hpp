@@ -9,7 +9,7 @@
 #include <cstddef>
 #include <vector>
 
-#include "core/device/plot_page.hpp"
+#include "core/plan/plot_stroke.hpp"
 #include "core/geometry/vector.hpp"
 
 namespace hlr {

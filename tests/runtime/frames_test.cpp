@@ -4,7 +4,7 @@
 
 #include <algorithm>
 
-#include "runtime/frame_runner.hpp"
+#include "runtime/frame_pipeline.hpp"
 #include "runtime/frame_selection.hpp"
 #include "runtime/output_plan.hpp"
 #include "tests/runtime/runtime_test_support.hpp"
@@ -76,21 +76,25 @@ TEST(Frames, CameraChoice) {
 TEST(Frames, ParallelRunsGiveTheSerialResult) {
   const auto program = Program::from_text("anim.hls", kAnimated);
   const std::vector<int> frames = {0, 1, 2, 3, 4};
-  RunOptions serial;
-  RunOptions parallel;
+  PipelineOptions serial;
+  serial.run.frame_count = 5;
+  serial.jobs = 1;
+  serial.write = false;
+  serial.keep_segments = true;
+  PipelineOptions parallel = serial;
   parallel.jobs = 3;
-  const RunResult a = run_frames(*program, frames, 5, 10, serial);
-  const RunResult b = run_frames(*program, frames, 5, 10, parallel);
+  const PipelineResult a = run_pipeline(*program, frames, 10, serial);
+  const PipelineResult b = run_pipeline(*program, frames, 10, parallel);
   ASSERT_EQ(a.frames.size(), 5U);
   ASSERT_EQ(b.frames.size(), 5U);
   for (std::size_t i = 0; i < 5; ++i) {
     EXPECT_EQ(a.frames[i].time.frame, static_cast<int>(i));
     EXPECT_TRUE(a.frames[i].hidden);  // style hidden dashed
-    ASSERT_EQ(a.frames[i].segments.size(), b.frames[i].segments.size()) << i;
-    EXPECT_GT(a.frames[i].segments.size(), 0U);
-    for (std::size_t s = 0; s < a.frames[i].segments.size(); ++s) {
-      EXPECT_EQ(a.frames[i].segments[s].p0, b.frames[i].segments[s].p0);
-      EXPECT_EQ(a.frames[i].segments[s].p1, b.frames[i].segments[s].p1);
+    ASSERT_EQ(a.frames[i].kept_segments.size(), b.frames[i].kept_segments.size()) << i;
+    EXPECT_GT(a.frames[i].kept_segments.size(), 0U);
+    for (std::size_t s = 0; s < a.frames[i].kept_segments.size(); ++s) {
+      EXPECT_EQ(a.frames[i].kept_segments[s].p0, b.frames[i].kept_segments[s].p0);
+      EXPECT_EQ(a.frames[i].kept_segments[s].p1, b.frames[i].kept_segments[s].p1);
     }
     EXPECT_EQ(a.frames[i].object_names, (std::vector<std::string>{"cube", "cylinder"}));
   }
@@ -102,10 +106,12 @@ TEST(Frames, TheLowestFailingFrameIsReported) {
                                           "let x = 1 / (frame % 3 - 2)\n"  // fails in frames 2 and 5
                                           "camera c = orbit()\n");
   for (unsigned jobs : {1U, 4U}) {
-    RunOptions options;
+    PipelineOptions options;
+    options.run.frame_count = 6;
     options.jobs = jobs;
+    options.write = false;
     try {
-      run_frames(*program, {0, 1, 2, 3, 4, 5}, 6, 24, options);
+      run_pipeline(*program, {0, 1, 2, 3, 4, 5}, 24, options);
       FAIL();
     } catch (const EvalError& e) {
       EXPECT_EQ(test::line_col(e.diagnostics.front()), "2:14: division by zero (in frame 2)") << jobs;
@@ -152,7 +158,7 @@ TEST(Frames, OutputNamesGroupFramesIntoFiles) {
   EXPECT_EQ(targets[2].path, "out-002.pdf");
 
   targets = plan_outputs(std::string("lines.json"), three, *program);
-  EXPECT_EQ(targets[0].device, Device::Json);
+  EXPECT_EQ(targets[0].device, DeviceKind::Json);
 
   OutputSetting s;
   s.name = "mine.pdf";

@@ -1,0 +1,230 @@
+#include "core/device/devices.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <fstream>
+#include <stdexcept>
+#include <string>
+#include <utility>
+
+#include "core/device/atomic_file.hpp"
+
+namespace hlr {
+
+namespace fs = std::filesystem;
+
+std::optional<DeviceKind> device_kind_for(const fs::path& path) {
+  std::string ext = path.extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+  if (ext == ".pdf") return DeviceKind::Pdf;
+  if (ext == ".svg") return DeviceKind::Svg;
+  if (ext == ".png") return DeviceKind::Png;
+  if (ext == ".hpgl" || ext == ".plt" || ext == ".hpg") return DeviceKind::Hpgl;
+  if (ext == ".steps") return DeviceKind::Steps;
+  if (ext == ".json") return DeviceKind::Json;
+  return std::nullopt;
+}
+
+const char* device_kind_name(DeviceKind kind) {
+  switch (kind) {
+    case DeviceKind::Pdf:
+      return "PDF";
+    case DeviceKind::Svg:
+      return "SVG";
+    case DeviceKind::Png:
+      return "PNG";
+    case DeviceKind::Hpgl:
+      return "HPGL";
+    case DeviceKind::Steps:
+      return "plotter-steps";
+    case DeviceKind::Json:
+      return "JSON";
+  }
+  return "?";
+}
+
+bool one_frame_per_file(DeviceKind kind) { return kind != DeviceKind::Pdf && kind != DeviceKind::Json; }
+
+const char* supported_extensions() { return "pdf, svg, png, hpgl (or .plt), steps, json"; }
+
+namespace {
+
+// A file that gets its frames' bytes as they come.
+class ByteFile : public DeviceFile {
+ public:
+  explicit ByteFile(const fs::path& path) : path_(path), out_(path, std::ios::binary | std::ios::trunc) {
+    if (!out_) throw DeviceError("cannot create '" + path.string() + "'");
+  }
+  void append(EncodedFrame frame) override {
+    if (!frame.file_head.empty() && first_) write(frame.file_head);
+    write(frame.bytes);
+    first_ = false;
+  }
+  void finish() override {
+    out_.close();
+    if (!out_) throw DeviceError("write to '" + path_.string() + "' failed");
+  }
+
+ protected:
+  void write(const std::string& bytes) {
+    out_.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+    if (!out_) throw DeviceError("write to '" + path_.string() + "' failed");
+  }
+  bool first_ = true;
+
+ private:
+  fs::path path_;
+  std::ofstream out_;
+};
+
+// Pages planned on the page itself: the grid, the page's top-left corner, the generic plotter's speeds.
+DevicePlanning page_planning() {
+  DevicePlanning p;
+  p.speeds = hpgl_profile_by_name("generic")->speeds;
+  return p;
+}
+
+class CairoDevice : public Device {
+ public:
+  explicit CairoDevice(CairoOptions options) : o_(std::move(options)) {}
+  const char* name() const override {
+    return o_.format == CairoFormat::Pdf ? "PDF" : o_.format == CairoFormat::Svg ? "SVG" : "PNG";
+  }
+  bool one_frame_per_file() const override { return o_.format != CairoFormat::Pdf; }
+  DevicePlanning planning(double, double) const override { return page_planning(); }
+  EncodedFrame encode(const DeviceFrame& frame) const override {
+    EncodedFrame out;
+    if (o_.format == CairoFormat::Pdf) {
+      check_cairo_page(frame.plot.page, o_);
+      out.page = frame.plot.page;
+    } else {
+      out.bytes = cairo_page_bytes(frame.plot.page, o_);
+    }
+    return out;
+  }
+  std::unique_ptr<DeviceFile> open(const fs::path& path) const override {
+    if (o_.format != CairoFormat::Pdf) return std::make_unique<ByteFile>(path);
+    return std::make_unique<PdfFile>(path, o_);
+  }
+
+ private:
+  class PdfFile : public DeviceFile {
+   public:
+    PdfFile(const fs::path& path, const CairoOptions& o) : pdf_(path, o) {}
+    void append(EncodedFrame frame) override { pdf_.add_page(*frame.page); }
+    void finish() override { pdf_.finish(); }
+
+   private:
+    CairoPdfWriter pdf_;
+  };
+  CairoOptions o_;
+};
+
+class HpglDevice : public Device {
+ public:
+  HpglDevice(HpglProfile profile, HpglOptions options) : profile_(std::move(profile)), o_(std::move(options)) {
+    check_hpgl_profile(profile_);
+  }
+  const char* name() const override { return "HPGL"; }
+  bool one_frame_per_file() const override { return true; }
+  DevicePlanning planning(double w, double h) const override {
+    DevicePlanning p;
+    p.grid_mm = profile_.unit_mm;
+    p.speeds = profile_.speeds;
+    // The pen reaches less than the whole sheet: the layout keeps to its reach, so the drawing stays
+    // centred on the real sheet and never needs clipping; the pen starts at the plotter's origin.
+    p.min_margin_mm = hpgl_min_margin_mm(profile_, w, h, o_.paper);
+    p.home = hpgl_home_on_page(profile_, w, h, o_.paper);
+    return p;
+  }
+  EncodedFrame encode(const DeviceFrame& frame) const override {
+    return {to_hpgl(frame.plot.page, profile_, o_), std::nullopt, {}};
+  }
+  std::unique_ptr<DeviceFile> open(const fs::path& path) const override { return std::make_unique<ByteFile>(path); }
+
+ private:
+  HpglProfile profile_;
+  HpglOptions o_;
+};
+
+class StepDevice : public Device {
+ public:
+  explicit StepDevice(StepOptions options) : o_(options) {}
+  const char* name() const override { return "plotter-steps"; }
+  bool one_frame_per_file() const override { return true; }
+  DevicePlanning planning(double, double h) const override {
+    // The thesis's Benson Lehner: steps at up to 2 cm/s, the pen starting at the sheet's corner.
+    DevicePlanning p;
+    p.grid_mm = o_.step_mm;
+    p.home = {0, h};
+    p.speeds = {20, 20, 0.1};
+    return p;
+  }
+  EncodedFrame encode(const DeviceFrame& frame) const override {
+    return {to_plotter_steps(frame.plot.page, o_), std::nullopt, {}};
+  }
+  std::unique_ptr<DeviceFile> open(const fs::path& path) const override { return std::make_unique<ByteFile>(path); }
+
+ private:
+  StepOptions o_;
+};
+
+class JsonDevice : public Device {
+ public:
+  explicit JsonDevice(JsonOptions options) : o_(std::move(options)) {}
+  const char* name() const override { return "JSON"; }
+  bool one_frame_per_file() const override { return false; }
+  DevicePlanning planning(double, double) const override { return page_planning(); }
+  EncodedFrame encode(const DeviceFrame& frame) const override {
+    JsonOptions o = o_;
+    o.include_hidden = o_.include_hidden || frame.include_hidden;
+    const JsonFrame f{frame.frame, frame.time, *frame.camera, *frame.segments, *frame.object_names, frame.plot};
+    EncodedFrame out;
+    out.bytes = json_frame_text(f, o);
+    out.file_head = json_document_head(frame.plot.page, o_);
+    return out;
+  }
+  std::unique_ptr<DeviceFile> open(const fs::path& path) const override {
+    return std::make_unique<JsonFile>(path, o_);
+  }
+
+ private:
+  class JsonFile : public ByteFile {
+   public:
+    JsonFile(const fs::path& path, const JsonOptions& o) : ByteFile(path), o_(o) {}
+    void append(EncodedFrame frame) override {
+      if (first_) write(frame.file_head);
+      write(json_frame_separator(first_, o_));
+      write(frame.bytes);
+      first_ = false;
+      ++frames_;
+    }
+    void finish() override {
+      if (first_) write(json_document_head(PlotPage{}, o_));
+      write(json_document_tail(frames_, o_));
+      ByteFile::finish();
+    }
+
+   private:
+    JsonOptions o_;
+    std::size_t frames_ = 0;
+  };
+  JsonOptions o_;
+};
+
+}  // namespace
+
+std::unique_ptr<Device> make_cairo_device(const CairoOptions& options) {
+  return std::make_unique<CairoDevice>(options);
+}
+std::unique_ptr<Device> make_hpgl_device(const HpglProfile& profile, const HpglOptions& options) {
+  return std::make_unique<HpglDevice>(profile, options);
+}
+std::unique_ptr<Device> make_step_device(const StepOptions& options) {
+  return std::make_unique<StepDevice>(options);
+}
+std::unique_ptr<Device> make_json_device(const JsonOptions& options) {
+  return std::make_unique<JsonDevice>(options);
+}
+
+}  // namespace hlr

@@ -1,0 +1,24 @@
+// The devices behind the Device interface (core/device/device.hpp), each made from its own settings.
+#pragma once
+
+#include <memory>
+
+#include "core/device/cairo_device.hpp"
+#include "core/device/device.hpp"
+#include "core/device/hpgl_device.hpp"
+#include "core/device/json_device.hpp"
+#include "core/device/step_device.hpp"
+
+namespace hlr {
+
+// PDF (any number of pages), SVG or PNG (one each), as options.format says. Planned on the page grid
+// from the page's top-left corner, with the generic plotter's speeds for the time estimate.
+std::unique_ptr<Device> make_cairo_device(const CairoOptions& options);
+// HP-GL for `profile`: planned in its plotter units from its origin, within the margin its reach needs.
+std::unique_ptr<Device> make_hpgl_device(const HpglProfile& profile, const HpglOptions& options = {});
+// The incremental plotter's tape: planned on its step grid from the sheet's bottom-left corner.
+std::unique_ptr<Device> make_step_device(const StepOptions& options = {});
+// hlrscript.lines/1, any number of frames; planned as the cairo devices are.
+std::unique_ptr<Device> make_json_device(const JsonOptions& options);
+
+}  // namespace hlr

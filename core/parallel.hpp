@@ -1,0 +1,36 @@
+// The one scheduler: oneTBB. Frames (runtime/frame_pipeline.cpp) and the work inside a frame (the
+// engine's objects and edges) are tasks of the same arena, so idle cores steal whatever is left, and the
+// arena the caller runs in (hlrscript --jobs N) bounds them all.
+#pragma once
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
+#include <cstddef>
+
+namespace hlr {
+
+// Calls body(k) once for every k in [0, count), in parallel. threads: 1 runs them in order on this
+// thread; 0 shares the caller's arena (every core, or what `--jobs` allows); N > 1 runs them in an arena
+// of N threads. Results must not depend on which thread ran which k: callers write into slot k.
+template <typename Body>
+void parallel_chunks(std::size_t count, unsigned threads, const Body& body) {
+  if (threads == 1 || count <= 1) {
+    for (std::size_t k = 0; k < count; ++k) body(k);
+    return;
+  }
+  auto run = [&] {
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, count, 1), [&](const tbb::blocked_range<std::size_t>& r) {
+      for (std::size_t k = r.begin(); k != r.end(); ++k) body(k);
+    });
+  };
+  if (threads == 0) {
+    run();
+  } else {
+    tbb::task_arena arena(static_cast<int>(threads));
+    arena.execute(run);
+  }
+}
+
+}  // namespace hlr

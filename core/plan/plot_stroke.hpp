@@ -1,0 +1,22 @@
+// A stroke: what the pen planner produces and every device draws — a polyline in page millimetres
+// drawn with one pen without lifting it. It lives with the planner (core/plan/) so that devices depend on
+// planning and never the other way round.
+#pragma once
+
+#include <vector>
+
+#include "core/geometry/vector.hpp"
+
+namespace hlr {
+
+// Hidden strokes exist only when the hidden layer is on; cairo devices dash them, HPGL gives them their
+// own pen (PlotStroke::pen).
+enum class StrokeLayer { Visible, Hidden };
+
+struct PlotStroke {
+  std::vector<Point2> points;  // at least two; consecutive points differ
+  int pen = 1;                 // 1-based pen (colour, width; the HPGL `SP` number)
+  StrokeLayer layer = StrokeLayer::Visible;
+};
+
+}  // namespace hlr

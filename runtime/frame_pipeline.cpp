@@ -1,0 +1,264 @@
+#include "runtime/frame_pipeline.hpp"
+
+#include <tbb/parallel_pipeline.h>
+#include <tbb/task_arena.h>
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <exception>
+#include <map>
+#include <memory>
+#include <set>
+#include <system_error>
+#include <thread>
+#include <tuple>
+#include <unistd.h>
+
+#include "core/hlr/render_frame.hpp"
+#include "runtime/eval_error.hpp"
+
+namespace hlr::runtime {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+// One frame's journey through the pipeline: made by the parallel stage, consumed in order.
+struct FrameJob {
+  std::size_t index = 0;
+  FrameRecord record;
+  OutputTarget target;
+  std::shared_ptr<const Device> device;
+  EncodedFrame encoded;
+  std::vector<lang::Diagnostic> warnings;
+  std::exception_ptr error;
+};
+
+// Everything one frame needs, from the script to the bytes for its file.
+void run_frame(const Program& program, int frame, double fps, const PipelineOptions& options,
+               std::optional<FrameScene>& first, FrameJob& job) {
+  const RunSettings& run = options.run;
+  FrameScene scene = (frame == 0 && first) ? std::move(*first)
+                                           : program.evaluate(frame_time(frame, run.frame_count, fps));
+  job.warnings = std::move(scene.warnings);
+  FrameSettings settings = resolve_target(scene, job.index, run, program);
+  FrameRecord& r = job.record;
+  r.time = scene.time;
+  r.evaluate_seconds = scene.evaluate_seconds;
+  r.camera_name = settings.camera->name;
+  r.hidden = settings.hidden;
+  r.path = settings.target.path;
+  for (const SceneObject& o : scene.scene.objects) {
+    r.object_names.push_back(o.name);
+    r.faces += o.solid.faces.size();
+  }
+  job.target = settings.target;
+  if (!options.render) return;
+
+  HlrOptions hlr;
+  hlr.include_hidden = settings.hidden;
+  const auto start = Clock::now();
+  FrameResult result = render_frame(scene.scene, settings.camera->camera, hlr);
+  r.render_seconds = seconds_since(start);
+  r.segments = result.segments.size();
+  r.stats = result.stats;
+  resolve_device(scene, run, settings);
+  job.device = settings.device;
+
+  DeviceFrame frame_out;
+  frame_out.frame = scene.time.frame;
+  frame_out.time = scene.time.time;
+  frame_out.camera = &settings.camera->camera;
+  frame_out.segments = &result.segments;
+  frame_out.object_names = &r.object_names;
+  frame_out.include_hidden = settings.hidden;
+  frame_out.plot = plot_page(result.segments, settings.camera->camera.frame, settings.caption, settings.plot);
+  r.plan = frame_out.plot.stats;
+  r.visible_segments = frame_out.plot.visible_segments;
+  if (options.write) {
+    try {
+      job.encoded = settings.device->encode(frame_out);
+    } catch (const DeviceError& e) {
+      throw OutputError("cannot write '" + settings.target.path.string() + "': " + e.what(), settings.target);
+    }
+  }
+  if (options.keep_segments) r.kept_segments = std::move(result.segments);
+}
+
+// A file being written beside its target, renamed into place by commit(); removed if never committed.
+class StagedFile {
+ public:
+  StagedFile(OutputTarget target, std::shared_ptr<const Device> device, int first_frame)
+      : target_(std::move(target)), device_(std::move(device)), first_frame_(first_frame) {
+    check_writable(target_);
+    const fs::path dir = target_.path.has_parent_path() ? target_.path.parent_path() : fs::path(".");
+    // Built by appending: GCC 12 warns falsely (-Wrestrict) on "." + std::string.
+    std::string name(1, '.');
+    name.append(target_.path.filename().string()).append(".tmp-").append(std::to_string(::getpid()));
+    temp_ = dir / name;
+    try {
+      file_ = device_->open(temp_);
+    } catch (const DeviceError& e) {
+      remove();
+      throw OutputError("cannot write '" + target_.path.string() + "': " + e.what(), target_);
+    }
+  }
+  ~StagedFile() { remove(); }
+  StagedFile(const StagedFile&) = delete;
+  StagedFile& operator=(const StagedFile&) = delete;
+
+  const OutputTarget& target() const { return target_; }
+  const Device& device() const { return *device_; }
+  int first_frame() const { return first_frame_; }
+
+  void append(EncodedFrame frame) { guard([&] { file_->append(std::move(frame)); }); }
+  void finish() {
+    guard([&] { file_->finish(); });
+    file_.reset();
+  }
+  void commit() {
+    std::error_code ec;
+    fs::rename(temp_, target_.path, ec);
+    if (ec) throw OutputError("cannot write '" + target_.path.string() + "': " + ec.message(), target_);
+    committed_ = true;
+  }
+
+ private:
+  template <typename F>
+  void guard(F&& f) {
+    try {
+      f();
+    } catch (const std::exception& e) {
+      throw OutputError("cannot write '" + target_.path.string() + "': " + e.what(), target_);
+    }
+  }
+  void remove() {
+    if (committed_) return;
+    file_.reset();
+    std::error_code ec;
+    fs::remove(temp_, ec);
+  }
+
+  OutputTarget target_;
+  std::shared_ptr<const Device> device_;
+  int first_frame_ = 0;
+  fs::path temp_;
+  std::unique_ptr<DeviceFile> file_;
+  bool committed_ = false;
+};
+
+// The in-order end of the pipeline: results in frame order, files opened and appended to.
+class FrameSink {
+ public:
+  FrameSink(const PipelineOptions& options) : options_(options) {}
+
+  // False once a frame has failed: later frames cannot matter.
+  bool take(FrameJob& job) {
+    if (error_) return false;
+    if (job.error) {
+      error_ = job.error;
+      return false;
+    }
+    try {
+      add(job);
+    } catch (...) {
+      error_ = std::current_exception();
+      return false;
+    }
+    return true;
+  }
+
+  PipelineResult finish() {
+    if (error_) {
+      files_.clear();  // removes every staged file
+      std::rethrow_exception(error_);
+    }
+    for (const auto& f : files_) f->finish();
+    for (const auto& f : files_) f->commit();
+    return std::move(result_);
+  }
+
+ private:
+  void add(FrameJob& job) {
+    for (lang::Diagnostic& w : job.warnings)
+      if (seen_.emplace(w.span.file, w.span.begin.offset, w.span.end.offset, w.message).second)
+        result_.warnings.push_back(std::move(w));
+    const int frame = job.record.time.frame;
+    const auto [it, added] = by_path_.emplace(job.target.path, files_.size());
+    if (added) {
+      result_.files.push_back(job.target.path);
+      first_frames_.push_back(frame);
+      if (options_.write && options_.render) files_.push_back(std::make_unique<StagedFile>(job.target, job.device, frame));
+    } else if (one_frame_per_file(job.target.device)) {
+      fail_several_frames(job.target, first_frames_[it->second], frame, options_.run.output.has_value());
+    }
+    if (options_.write && options_.render) files_[it->second]->append(std::move(job.encoded));
+    result_.frames.push_back(std::move(job.record));
+  }
+
+  const PipelineOptions& options_;
+  PipelineResult result_;
+  std::map<fs::path, std::size_t> by_path_;
+  std::vector<std::unique_ptr<StagedFile>> files_;
+  std::vector<int> first_frames_;
+  std::set<std::tuple<lang::FileId, std::uint32_t, std::uint32_t, std::string>> seen_;
+  std::exception_ptr error_;
+};
+
+}  // namespace
+
+PipelineResult run_pipeline(const Program& program, const std::vector<int>& frames, double fps,
+                            const PipelineOptions& options, std::optional<FrameScene> first) {
+  const unsigned hardware = std::max(1U, std::thread::hardware_concurrency());
+  const unsigned jobs = options.jobs == 0 ? hardware : options.jobs;
+  // Frames in flight: enough to keep every thread busy while one waits its turn to be written, few
+  // enough that memory does not grow with the sequence.
+  const std::size_t tokens = 2 * static_cast<std::size_t>(jobs) + 1;
+  FrameSink sink(options);
+  std::size_t next = 0;
+  std::atomic<bool> stop{false};
+
+  auto input = [&](tbb::flow_control& fc) -> FrameJob* {
+    if (stop || next >= frames.size()) {
+      fc.stop();
+      return nullptr;
+    }
+    auto* job = new FrameJob;
+    job->index = next++;
+    return job;
+  };
+  auto work = [&](FrameJob* job) -> FrameJob* {
+    const int frame = frames[job->index];
+    try {
+      run_frame(program, frame, fps, options, first, *job);
+    } catch (EvalError& e) {
+      if (options.run.frame_count > 1 && !e.diagnostics.empty())
+        e.diagnostics.front().message += " (in frame " + std::to_string(frame) + ")";
+      job->error = std::current_exception();
+    } catch (...) {
+      job->error = std::current_exception();
+    }
+    return job;
+  };
+  auto output = [&](FrameJob* job) {
+    const std::unique_ptr<FrameJob> owned(job);
+    if (!sink.take(*job)) stop = true;
+  };
+
+  tbb::task_arena arena(static_cast<int>(jobs));
+  arena.execute([&] {
+    tbb::parallel_pipeline(tokens, tbb::make_filter<void, FrameJob*>(tbb::filter_mode::serial_in_order, input) &
+                                       tbb::make_filter<FrameJob*, FrameJob*>(tbb::filter_mode::parallel, work) &
+                                       tbb::make_filter<FrameJob*, void>(tbb::filter_mode::serial_in_order, output));
+  });
+  return sink.finish();
+}
+
+}  // namespace hlr::runtime

@@ -1,0 +1,68 @@
+// The frame pipeline: from a loaded script to its files, every frame on every core (runtime/README.md
+// draws the path). Frames are independent, so each one's whole journey — evaluate, resolve its
+// settings, hidden lines, page layout and pen plan, device encoding — runs beside the others'; only
+// appending to the files happens one frame after another, in frame order. A bounded number of frames is
+// in flight, so memory stays flat however long the sequence. Output bytes do not depend on --jobs.
+// Files are written beside their targets and renamed into place only when every frame succeeded; on
+// any failure nothing is written and the failure of the lowest failing frame is reported.
+#pragma once
+
+#include <cstddef>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/device/atomic_file.hpp"
+#include "core/hlr/visible_segment.hpp"
+#include "core/plan/pen_plan.hpp"
+#include "lang/diagnostic.hpp"
+#include "runtime/output_settings.hpp"
+#include "runtime/program.hpp"
+#include "runtime/run_error.hpp"
+
+namespace hlr::runtime {
+
+// A device's failure for one file: reported at the script's output statement when it named the file.
+struct OutputError : DeviceError {
+  OutputError(const std::string& message, OutputTarget target_) : DeviceError(message), target(std::move(target_)) {}
+  OutputTarget target;
+};
+
+struct PipelineOptions {
+  RunSettings run;
+  unsigned jobs = 0;     // threads for everything (frames and the work inside them); 0: one per core
+  bool render = true;    // false: evaluate and resolve cameras and files only (hlrscript check)
+  bool write = true;     // false: render and plan, but write no file (tests, the REPL)
+  bool keep_segments = false;  // FrameRecord::segments holds the frame's pieces
+};
+
+// What became of one frame, in frame order.
+struct FrameRecord {
+  FrameTime time;
+  std::string camera_name;
+  std::vector<std::string> object_names;  // by VisibleSegment::object
+  std::size_t faces = 0;                  // faces drawn
+  std::size_t segments = 0;               // pieces the engine returned (hidden ones included when on)
+  bool hidden = false;
+  FrameStats stats;
+  double evaluate_seconds = 0, render_seconds = 0;
+  std::filesystem::path path;  // the file it went to
+  PlanStats plan;
+  std::size_t visible_segments = 0;  // pieces given to the pen plan
+  std::vector<VisibleSegment> kept_segments;  // with keep_segments only
+};
+
+struct PipelineResult {
+  std::vector<FrameRecord> frames;             // in the order of `frames` given
+  std::vector<std::filesystem::path> files;    // written (or that would be), in order of first frame
+  std::vector<lang::Diagnostic> warnings;      // from every frame, each distinct one once
+};
+
+// Runs `frames` of `program`. `first` is frame 0's scene when the caller has evaluated it already; `fps`
+// comes from its animate statement. Throws EvalError or RunError of the lowest failing frame (for an
+// animation the message names the frame), OutputError for a device's failure.
+PipelineResult run_pipeline(const Program& program, const std::vector<int>& frames, double fps,
+                            const PipelineOptions& options, std::optional<FrameScene> first = std::nullopt);
+
+}  // namespace hlr::runtime
