@@ -21,9 +21,10 @@ void parallel_chunks(std::size_t count, unsigned threads, const Body& body) {
     return;
   }
   auto run = [&] {
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, count, 1), [&](const tbb::blocked_range<std::size_t>& r) {
-      for (std::size_t k = r.begin(); k != r.end(); ++k) body(k);
-    });
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, count, 1),
+                      [&](const tbb::blocked_range<std::size_t>& r) {
+                        for (std::size_t k = r.begin(); k != r.end(); ++k) body(k);
+                      });
   };
   if (threads == 0) {
     run();

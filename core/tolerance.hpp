@@ -23,6 +23,8 @@ struct Tolerance {
   // Two faces sharing an edge are coplanar (the edge is not drawn) when their unit normals differ by
   // less than this angle, in radians (≈ 0.0006°): catches data rounded to 6 digits, nothing visible.
   static constexpr double kCoplanarAngle = 1e-5;
+  // A positive floor for a scale or a divisor: keeps it nonzero, and is below every real length.
+  static constexpr double kFloor = 1e-300;
 
   double length = 0;  // absolute length tolerance in the units of the data compared
 
@@ -32,7 +34,7 @@ struct Tolerance {
   // picture — but never below the view-space tolerance `length` seen at the nearest `depth` (perspective;
   // pass depth = 1 for orthographic, where picture = focal · view).
   static double picture(double max_abs, double focal, double length, double depth) {
-    return std::max(kRelative * max_abs, std::abs(focal) * length / std::max(depth, 1e-300));
+    return std::max(kRelative * max_abs, std::abs(focal) * length / std::max(depth, kFloor));
   }
 
   // Rounding of coordinates themselves: the engine works in view space, where every coordinate comes from
@@ -44,13 +46,60 @@ struct Tolerance {
   // world coordinates of magnitude up to `world_extent` (so a scene translated far from the origin keeps
   // its decisions).
   static Tolerance for_view(double view_extent, double world_extent) {
-    return Tolerance{kRelative * std::abs(view_extent) + kRounding * std::abs(world_extent) + 1e-300};
+    return Tolerance{kRelative * std::abs(view_extent) + kRounding * std::abs(world_extent) + kFloor};
   }
 
   // Tolerance for data whose coordinates have magnitude up to `extent`.
   static Tolerance for_extent(double extent) {
-    return Tolerance{kRelative * std::max(std::abs(extent), 1e-300)};
+    return Tolerance{kRelative * std::max(std::abs(extent), kFloor)};
   }
+
+  // ---- Cameras: near planes (perspective). Only keep 1/depth defined; none cuts a visible object.
+  // Camera's default near depth, in view depth units, when its constructor sets none.
+  static constexpr double kDefaultNearDepth = 1e-3;
+  // lookat()'s default near depth per unit of |target − eye|: far enough to keep 1/depth tame.
+  static constexpr double kLookatNearFraction = 1e-4;
+  // orbit()'s near depth per unit of ρ: Albers never clips at the eye, so as close to it as is safe.
+  static constexpr double kOrbitNearFraction = 1e-6;
+
+  // ---- Solid generators (stdlib), relative to the generator's coordinates or sizes.
+  // Smallest feature (profile size, grid step, ring spacing) per unit of the largest coordinate: 100 ×
+  // kRelative, so the feature's vertices stay apart by far more than the builder's coincidence tolerance.
+  static constexpr double kGeneratorFeature = 1e-7;
+  // sweep(): a unit start tangent whose part across +z is shorter than this is vertical (up is then +y).
+  static constexpr double kSweepVertical = 1e-6;
+  // sweep(): unit tangents whose dot product is within this of −1 reverse the path (no mitre exists).
+  static constexpr double kSweepReversal = 1e-12;
+  // sweep(): a closed path's frame twist round the loop, in radians, below which the ring closes flat.
+  static constexpr double kSweepTwist = 1e-9;
+  // sweep(): a mitred lateral line must run forward by more than this fraction of the profile's size.
+  static constexpr double kSweepMitre = 1e-6;
+  // heightfield(): a cell stays one quad when its warp is below this fraction of the heights' scale:
+  // rounding of a four-term sum of heights (≈ 4·2^-53) with margin.
+  static constexpr double kHeightfieldWarp = 1e-12;
+  // Triangulation: a ring's turning angle within this of 2π (radians) turns once; n atan2 calls each
+  // err by ~1e-16.
+  static constexpr double kTurning = 1e-6;
+  // Desens' carrier hull (faces 13–16) deviates from planarity by up to 2.7e-3 of its size (1969 data).
+  static constexpr double kDesensCarrierPlanarity = 3e-3;
+
+  // ---- Pen planning, in device grid units (coordinates up to 2^29, so sums round at ~1e-7).
+  // A 2-opt or Or-opt move must shorten the tour by more than this, or rounding could make moves cycle.
+  static constexpr double kPlanGain = 1e-7;
+  // A swap of matched odd vertices must gain more than this fraction of (distance + 1): the same
+  // anti-cycling guard, relative to the distances compared.
+  static constexpr double kPlanMatchingGain = 1e-9;
+  // Smallest width and height of the neighbour grid's box: a set of points on a line still gets cells.
+  static constexpr double kPlanGridExtent = 1e-9;
+  // Slack on the reach of a merge tolerance across a piece: a vertex exactly at the tolerance is on it.
+  static constexpr double kPlanReachSlack = 1e-9;
+
+  // ---- Devices.
+  // HPGL: a sheet edge within this many plotter units of a whole unit is that unit (mm / unit is rarely
+  // exact in binary, and the pen must never be sent one unit past the sheet nor lose one).
+  static constexpr double kPlotterUnitSnap = 1e-6;
+  // HPGL: a page matches a profile's paper when each side is within this many mm of the sheet's.
+  static constexpr double kPaperMatchMm = 0.5;
 };
 
 }  // namespace hlr

@@ -130,7 +130,8 @@ int run_program(const Program& program, const CliOptions& o, std::ostream& out, 
     // Mistakes visible in frame 0 are reported before any rendering: no camera, a bad output name, a
     // missing directory, one file named for several frames of a one-frame device.
     const FrameSettings settings0 = resolve_target(first, 0, options.run, program);
-    if (o.output && !has_frame_field(*o.output) && frames.size() > 1 && one_frame_per_file(settings0.target.device))
+    if (o.output && !has_frame_field(*o.output) && frames.size() > 1 &&
+        one_frame_per_file(settings0.target.device))
       fail_several_frames(settings0.target, frames[0], frames[1], true);
     try {
       check_writable(settings0.target);
@@ -157,12 +158,13 @@ int run_program(const Program& program, const CliOptions& o, std::ostream& out, 
       faces += f.faces;
       segments += f.segments;
     }
-    const std::string files = result.files.front().string() +
-                              (result.files.size() > 1 ? " and " + std::to_string(result.files.size() - 1) + " more files" : "");
+    const std::string files =
+        result.files.front().string() +
+        (result.files.size() > 1 ? " and " + std::to_string(result.files.size() - 1) + " more files" : "");
     if (o.mode == CliOptions::Mode::Check) {
       out << name << ": ok: " << result.frames.size() << (result.frames.size() == 1 ? " frame" : " frames")
-          << " evaluated, " << objects << " objects in frame 0, " << faces << " faces drawn in all, cameras: "
-          << cameras << "; would write " << files << "\n";
+          << " evaluated, " << objects << " objects in frame 0, " << faces
+          << " faces drawn in all, cameras: " << cameras << "; would write " << files << "\n";
       return kExitOk;
     }
     char line[256];

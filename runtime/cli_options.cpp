@@ -7,7 +7,10 @@
 #include <sstream>
 
 #include "core/device/page_layout.hpp"
+#include "core/format_number.hpp"
+#include "core/limits.hpp"
 #include "runtime/cli.hpp"
+#include "runtime/limits.hpp"
 #include "runtime/output_plan.hpp"
 
 namespace hlr::runtime {
@@ -93,9 +96,8 @@ bool number_option(const po::variables_map& vm, const char* name, double lo, dou
   double v = 0;
   const auto r = std::from_chars(text.data(), text.data() + text.size(), v);
   if (r.ec != std::errc() || r.ptr != text.data() + text.size() || !(v >= lo && v <= hi)) {
-    char buf[160];
-    std::snprintf(buf, sizeof buf, "--%s %s: expected a number from %g to %g", name, text.c_str(), lo, hi);
-    error = buf;
+    error = std::string("--") + name + " " + text + ": expected a number from " + format_for_message(lo) + " to " +
+            format_for_message(hi);
     return false;
   }
   out = v;
@@ -122,11 +124,11 @@ bool parse_device_options(const po::variables_map& vm, DeviceOptions& d, std::st
   if (!number_option(vm, "margin", 0, 1000, d.margin_mm, error) ||
       !number_option(vm, "scale", 1e-9, 1e9, d.mm_per_unit, error) ||
       !number_option(vm, "dpi", 10, 2400, dpi, error) ||
-      !number_option(vm, "line-width", 0.01, 10, d.line_width_mm, error))
+      !number_option(vm, "line-width", 0.01, kMaxPenWidthMm, d.line_width_mm, error))
     return false;
   if (dpi) d.dpi = *dpi;
   std::optional<double> step;
-  if (!number_option(vm, "step", 0.001, 10, step, error)) return false;
+  if (!number_option(vm, "step", kMinPlotterStepMm, kMaxPlotterStepMm, step, error)) return false;
   if (step) d.step_mm = *step;
   std::optional<double> budget;
   if (!number_option(vm, "plan-budget", 0, 600000, budget, error)) return false;
@@ -230,8 +232,8 @@ std::optional<CliOptions> parse_cli(int argc, const char* const argv[], std::ost
     if (o.mode == CliOptions::Mode::Demo) {
       int n = 0;
       const auto r = std::from_chars(text.data(), text.data() + text.size(), n);
-      if (r.ec != std::errc() || r.ptr != text.data() + text.size() || n < 1 || n > 10000)
-        return usage_error(err, "--demo --frames needs a whole number from 1 to 10000");
+      if (r.ec != std::errc() || r.ptr != text.data() + text.size() || n < 1 || n >= static_cast<int>(kMaxFrames))
+        return usage_error(err, "--demo --frames needs a whole number from 1 to " + std::to_string(kMaxFrames - 1));
       o.demo_frames = n;
     } else if (!(o.frames = parse_frame_range(text, error))) {
       return usage_error(err, error);

@@ -12,9 +12,10 @@
 
 #include "core/device/hpgl_profile.hpp"
 #include "core/device/pen_style.hpp"
+#include "core/format_number.hpp"
+#include "core/limits.hpp"
 #include "runtime/eval_detail.hpp"
 #include "runtime/evaluator.hpp"
-#include "runtime/format_value.hpp"
 
 namespace hlr::runtime {
 
@@ -106,8 +107,8 @@ double number_in(const GivenOption& option, const OptionList& list, Ok&& ok, con
   const double x = option.value.as_number();
   if (!std::isfinite(x) || !ok(x))
     fail(option.span,
-         list.who + list.noun + " '" + option.written + "' must be " + range + " (got " + format_number(x) +
-             ")",
+         list.who + list.noun + " '" + option.written + "' must be " + range + " (got " +
+             format_for_message(x) + ")",
          list.hint);
   return x;
 }
@@ -122,10 +123,12 @@ bool equal_ignoring_case(std::string_view a, std::string_view b) {
 
 // ---- paper ------------------------------------------------------------------------------------------
 
-constexpr const char* kPaperHint =
-    "the paper options are margin: millimetres from 0, leaving room on the page, and scale: millimetres "
-    "per drawing unit above 0 (instead of fitting the drawing to the page); 'paper custom' also takes "
-    "width: and height: in millimetres, up to 10000";
+std::string paper_hint() {
+  return "the paper options are margin: millimetres from 0, leaving room on the page, and scale: "
+         "millimetres per drawing unit above 0 (instead of fitting the drawing to the page); 'paper custom' "
+         "also takes width: and height: in millimetres, up to " +
+         format_for_message(kMaxPaperSideMm);
+}
 
 std::string paper_list() {
   std::string out;
@@ -135,20 +138,27 @@ std::string paper_list() {
 
 // ---- pens -------------------------------------------------------------------------------------------
 
-constexpr int kMaxPen = 255;
-constexpr double kMaxPenWidthMm = 10;
-constexpr const char* kPenHint =
-    "the pen options are colour: (or color:) \"#rrggbb\", \"#rgb\" or one of black, red, green, blue, cyan, "
-    "magenta, yellow, orange, grey, gray, white, brown, purple; width: millimetres above 0 and at most 10";
+std::string pen_numbers() { return "a whole number from 1 to " + std::to_string(kMaxPen); }
+std::string pen_widths() { return "above 0 and at most " + format_for_message(kMaxPenWidthMm) + " mm"; }
+std::string pen_hint() {
+  return "the pen options are colour: (or color:) \"#rrggbb\", \"#rgb\" or one of black, red, green, blue, "
+         "cyan, magenta, yellow, orange, grey, gray, white, brown, purple; width: millimetres above 0 and at "
+         "most " +
+         format_for_message(kMaxPenWidthMm);
+}
 
 // ---- plotters ---------------------------------------------------------------------------------------
 
 std::string plotter_hint() {
   return "the keys are base: a built-in profile to start from (" + hpgl_profile_list() +
-         "; default generic), unit: millimetres per plotter unit (0.001 to 1), pens: 1 to 255, "
-         "velocity: cm/s above 0 and at most 200, moves: \"relative\" or \"absolute\", "
-         "max_pairs: coordinate pairs per PD (1 to 10000), newline: true or false, "
-         "pen_speed and travel_speed: mm/s above 0, lift_time: seconds from 0, info: a string";
+         "; default generic), unit: millimetres per plotter unit (" + format_for_message(kMinPlotterUnitMm) +
+         " to " + format_for_message(kMaxPlotterUnitMm) + "), pens: 1 to " + std::to_string(kMaxPen) +
+         ", velocity: cm/s from " + format_for_message(kMinVelocityCmS) + " to " +
+         format_for_message(kMaxVelocityCmS) +
+         ", moves: \"relative\" or \"absolute\", max_pairs: coordinate pairs per PD (1 to " +
+         std::to_string(kMaxPairsPerPd) +
+         "), newline: true or false, pen_speed and travel_speed: mm/s above 0, lift_time: seconds from 0, "
+         "info: a string";
 }
 
 }  // namespace
@@ -156,7 +166,7 @@ std::string plotter_hint() {
 int Evaluator::eval_pen_number(const lang::Expr& expr, const ScopePtr& scope) {
   const double pen = eval_number(expr, scope, "the pen number");
   if (!(pen >= 1 && pen <= kMaxPen) || !whole(pen))
-    fail(expr.span, "the pen number must be a whole number from 1 to 255, got " + format_number(pen));
+    fail(expr.span, "the pen number must be " + pen_numbers() + ", got " + format_for_message(pen));
   return static_cast<int>(pen);
 }
 
@@ -176,7 +186,7 @@ void Evaluator::set_paper(const lang::PaperSpec& paper, const lang::Stmt& stmt, 
   const OptionList list{"paper '" + size + "': ",
                         "option",
                         "margin: 10",
-                        kPaperHint,
+                        paper_hint(),
                         {{"margin", ValueKind::Number},
                          {"scale", ValueKind::Number},
                          {"width", ValueKind::Number},
@@ -197,8 +207,9 @@ void Evaluator::set_paper(const lang::PaperSpec& paper, const lang::Stmt& stmt, 
            "turns the sheet");
     }
     auto size_ok = [](double x) { return x > 0 && x <= kMaxPaperSideMm; };
-    found->width_mm = number_in(*width, list, size_ok, "above 0 and at most 10000 mm");
-    found->height_mm = number_in(*height, list, size_ok, "above 0 and at most 10000 mm");
+    const std::string range = "above 0 and at most " + format_for_message(kMaxPaperSideMm) + " mm";
+    found->width_mm = number_in(*width, list, size_ok, range);
+    found->height_mm = number_in(*height, list, size_ok, range);
     // An orientation word turns the sheet: landscape is at least as wide as high, portrait the reverse.
     if ((paper.orientation == lang::Orientation::Landscape && found->width_mm < found->height_mm) ||
         (paper.orientation == lang::Orientation::Portrait && found->width_mm > found->height_mm))
@@ -215,10 +226,10 @@ void Evaluator::set_paper(const lang::PaperSpec& paper, const lang::Stmt& stmt, 
     const double shorter = std::min(found->width_mm, found->height_mm);
     if (!(2 * *setting.margin_mm < shorter))
       fail(margin->span,
-           list.who + "a margin of " + format_number(*setting.margin_mm) + " mm leaves no room on " +
-               format_number(found->width_mm) + " × " + format_number(found->height_mm) + " mm",
-           "the margins on both sides must be less than the paper's shorter side (" + format_number(shorter) +
-               " mm)");
+           list.who + "a margin of " + format_for_message(*setting.margin_mm) + " mm leaves no room on " +
+               format_for_message(found->width_mm) + " × " + format_for_message(found->height_mm) + " mm",
+           "the margins on both sides must be less than the paper's shorter side (" +
+               format_for_message(shorter) + " mm)");
   }
   if (const GivenOption* scale = find(given, "scale"))
     setting.mm_per_unit = number_in(
@@ -242,18 +253,18 @@ void Evaluator::exec_pen(const lang::PenStmt& pen, const lang::Stmt& stmt, const
   const OptionList list{"pen " + std::to_string(setting.pen) + ": ",
                         "option",
                         "colour: \"red\"",
-                        kPenHint,
+                        pen_hint(),
                         {{"colour", ValueKind::String, "color"}, {"width", ValueKind::Number}}};
   const GivenOptions given =
       check_options(pen.options, list, [&](const lang::Expr& e) { return eval(e, scope); });
   if (const GivenOption* colour = find(given, "colour")) {
     const std::string& text = colour->value.as_string();
-    if (!parse_colour(text)) fail(colour->span, list.who + "unknown colour \"" + text + "\"", kPenHint);
+    if (!parse_colour(text)) fail(colour->span, list.who + "unknown colour \"" + text + "\"", pen_hint());
     setting.colour = text;
   }
   if (const GivenOption* width = find(given, "width"))
     setting.width_mm = number_in(
-        *width, list, [](double x) { return x > 0 && x <= kMaxPenWidthMm; }, "above 0 and at most 10 mm");
+        *width, list, [](double x) { return x > 0 && x <= kMaxPenWidthMm; }, pen_widths());
   out_.pens.push_back(std::move(setting));
 }
 
@@ -311,14 +322,17 @@ void Evaluator::exec_plotter(const lang::PlotterStmt& plotter, const lang::Stmt&
   auto positive = [](double x) { return x > 0; };
   if (const GivenOption* o = find(given, "unit"))
     profile.unit_mm = number_in(
-        *o, list, [](double x) { return x >= 0.001 && x <= 1; }, "from 0.001 to 1 mm");
+        *o, list, [](double x) { return x >= kMinPlotterUnitMm && x <= kMaxPlotterUnitMm; },
+        "from " + format_for_message(kMinPlotterUnitMm) + " to " + format_for_message(kMaxPlotterUnitMm) +
+            " mm");
   if (const GivenOption* o = find(given, "pens"))
     profile.pen_count = static_cast<int>(number_in(
-        *o, list, [](double x) { return x >= 1 && x <= kMaxPen && whole(x); },
-        "a whole number from 1 to 255"));
+        *o, list, [](double x) { return x >= 1 && x <= kMaxPen && whole(x); }, pen_numbers()));
   if (const GivenOption* o = find(given, "velocity"))
     profile.velocity_cm_s = number_in(
-        *o, list, [](double x) { return x > 0 && x <= 200; }, "above 0 and at most 200 cm/s");
+        *o, list, [](double x) { return x >= kMinVelocityCmS && x <= kMaxVelocityCmS; },
+        "from " + format_for_message(kMinVelocityCmS) + " to " + format_for_message(kMaxVelocityCmS) +
+            " cm/s");
   if (const GivenOption* o = find(given, "moves")) {
     const std::string& moves = o->value.as_string();
     if (moves != "relative" && moves != "absolute")
@@ -328,8 +342,8 @@ void Evaluator::exec_plotter(const lang::PlotterStmt& plotter, const lang::Stmt&
   }
   if (const GivenOption* o = find(given, "max_pairs"))
     profile.max_pairs_per_pd = static_cast<int>(number_in(
-        *o, list, [](double x) { return x >= 1 && x <= 10000 && whole(x); },
-        "a whole number from 1 to 10000"));
+        *o, list, [](double x) { return x >= 1 && x <= kMaxPairsPerPd && whole(x); },
+        "a whole number from 1 to " + std::to_string(kMaxPairsPerPd)));
   if (const GivenOption* o = find(given, "newline")) profile.newline = o->value.as_bool();
   if (const GivenOption* o = find(given, "pen_speed"))
     profile.speeds.pen_down_mm_per_s = number_in(*o, list, positive, "above 0 mm/s");

@@ -5,9 +5,9 @@
 #include <cstdlib>
 #include <filesystem>
 
+#include "core/format_number.hpp"
 #include "runtime/eval_detail.hpp"
 #include "runtime/evaluator.hpp"
-#include "runtime/format_value.hpp"
 
 namespace hlr::runtime {
 
@@ -33,17 +33,17 @@ void Evaluator::exec_animate(const lang::AnimateStmt& animate, const lang::Stmt&
   if (out_.animation) already_set(stmt.span, "animate", out_.animation->span);
   const double frames = eval_number(*animate.frames, scope, "the frame count");
   if (frames > static_cast<double>(kMaxFrames))
-    fail(animate.frames->span, limit_message("frames", kMaxFrames) + ": got " + format_number(frames),
+    fail(animate.frames->span, limit_message("frames", kMaxFrames) + ": got " + format_for_message(frames),
          "split a long sequence into several scripts or render at a lower frame rate");
   if (!(frames >= 1) || std::floor(frames) != frames)
     fail(animate.frames->span, "the frame count must be a whole number from 1 to " +
-                                   std::to_string(kMaxFrames) + ", got " + format_number(frames));
+                                   std::to_string(kMaxFrames) + ", got " + format_for_message(frames));
   AnimationSetting a;
   a.frames = static_cast<int>(frames);
   a.span = stmt.span;
   if (animate.fps) {
     a.fps = eval_number(*animate.fps, scope, "fps");
-    if (!(a.fps > 0)) fail(animate.fps->span, "fps must be positive, got " + format_number(a.fps));
+    if (!(a.fps > 0)) fail(animate.fps->span, "fps must be positive, got " + format_for_message(a.fps));
   }
   out_.animation = a;
 }

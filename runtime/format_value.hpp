@@ -1,6 +1,7 @@
 // Values as text: str(x), string interpolation "{x}" and "{x:fmt}".
 // Numbers print with the fewest digits that read back to the same double, positional from 1e-6 to 1e21
-// (`1`, `0.5`, `100000`), scientific outside (`1e-07`, `1e+21`).
+// (`1`, `0.5`, `100000`), scientific outside (`1e-07`, `1e+21`). That is a value's text in the language;
+// numbers quoted in messages go through hlr::format_for_message (core/format_number.hpp).
 // Format specs (LANGUAGE_SPEC.md, "Strings"): [0][width][.precision][type], type one of
 //   f fixed   e scientific   g (or none, with a precision) significant digits   d whole number   x hex
 // `03` pads a number with zeros to width 3, `8.2f` right-aligns in 8 columns, `.3` keeps 3 significant

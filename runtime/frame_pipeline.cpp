@@ -2,6 +2,7 @@
 
 #include <tbb/parallel_pipeline.h>
 #include <tbb/task_arena.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <atomic>
@@ -13,7 +14,6 @@
 #include <system_error>
 #include <thread>
 #include <tuple>
-#include <unistd.h>
 
 #include "core/hlr/render_frame.hpp"
 #include "runtime/eval_error.hpp"
@@ -45,8 +45,8 @@ struct FrameJob {
 void run_frame(const Program& program, int frame, double fps, const PipelineOptions& options,
                std::optional<FrameScene>& first, FrameJob& job) {
   const RunSettings& run = options.run;
-  FrameScene scene = (frame == 0 && first) ? std::move(*first)
-                                           : program.evaluate(frame_time(frame, run.frame_count, fps));
+  FrameScene scene =
+      (frame == 0 && first) ? std::move(*first) : program.evaluate(frame_time(frame, run.frame_count, fps));
   job.warnings = std::move(scene.warnings);
   FrameSettings settings = resolve_target(scene, job.index, run, program);
   FrameRecord& r = job.record;
@@ -118,7 +118,9 @@ class StagedFile {
   const Device& device() const { return *device_; }
   int first_frame() const { return first_frame_; }
 
-  void append(EncodedFrame frame) { guard([&] { file_->append(std::move(frame)); }); }
+  void append(EncodedFrame frame) {
+    guard([&] { file_->append(std::move(frame)); });
+  }
   void finish() {
     guard([&] { file_->finish(); });
     file_.reset();
@@ -195,7 +197,8 @@ class FrameSink {
     if (added) {
       result_.files.push_back(job.target.path);
       first_frames_.push_back(frame);
-      if (options_.write && options_.render) files_.push_back(std::make_unique<StagedFile>(job.target, job.device, frame));
+      if (options_.write && options_.render)
+        files_.push_back(std::make_unique<StagedFile>(job.target, job.device, frame));
     } else if (one_frame_per_file(job.target.device)) {
       fail_several_frames(job.target, first_frames_[it->second], frame, options_.run.output.has_value());
     }
@@ -254,9 +257,10 @@ PipelineResult run_pipeline(const Program& program, const std::vector<int>& fram
 
   tbb::task_arena arena(static_cast<int>(jobs));
   arena.execute([&] {
-    tbb::parallel_pipeline(tokens, tbb::make_filter<void, FrameJob*>(tbb::filter_mode::serial_in_order, input) &
-                                       tbb::make_filter<FrameJob*, FrameJob*>(tbb::filter_mode::parallel, work) &
-                                       tbb::make_filter<FrameJob*, void>(tbb::filter_mode::serial_in_order, output));
+    tbb::parallel_pipeline(tokens,
+                           tbb::make_filter<void, FrameJob*>(tbb::filter_mode::serial_in_order, input) &
+                               tbb::make_filter<FrameJob*, FrameJob*>(tbb::filter_mode::parallel, work) &
+                               tbb::make_filter<FrameJob*, void>(tbb::filter_mode::serial_in_order, output));
   });
   return sink.finish();
 }

@@ -25,15 +25,16 @@ namespace hlr::runtime {
 
 // A device's failure for one file: reported at the script's output statement when it named the file.
 struct OutputError : DeviceError {
-  OutputError(const std::string& message, OutputTarget target_) : DeviceError(message), target(std::move(target_)) {}
+  OutputError(const std::string& message, OutputTarget target_)
+      : DeviceError(message), target(std::move(target_)) {}
   OutputTarget target;
 };
 
 struct PipelineOptions {
   RunSettings run;
-  unsigned jobs = 0;     // threads for everything (frames and the work inside them); 0: one per core
-  bool render = true;    // false: evaluate and resolve cameras and files only (hlrscript check)
-  bool write = true;     // false: render and plan, but write no file (tests, the REPL)
+  unsigned jobs = 0;           // threads for everything (frames and the work inside them); 0: one per core
+  bool render = true;          // false: evaluate and resolve cameras and files only (hlrscript check)
+  bool write = true;           // false: render and plan, but write no file (tests, the REPL)
   bool keep_segments = false;  // FrameRecord::segments holds the frame's pieces
 };
 
@@ -49,14 +50,14 @@ struct FrameRecord {
   double evaluate_seconds = 0, render_seconds = 0;
   std::filesystem::path path;  // the file it went to
   PlanStats plan;
-  std::size_t visible_segments = 0;  // pieces given to the pen plan
+  std::size_t visible_segments = 0;           // pieces given to the pen plan
   std::vector<VisibleSegment> kept_segments;  // with keep_segments only
 };
 
 struct PipelineResult {
-  std::vector<FrameRecord> frames;             // in the order of `frames` given
-  std::vector<std::filesystem::path> files;    // written (or that would be), in order of first frame
-  std::vector<lang::Diagnostic> warnings;      // from every frame, each distinct one once
+  std::vector<FrameRecord> frames;           // in the order of `frames` given
+  std::vector<std::filesystem::path> files;  // written (or that would be), in order of first frame
+  std::vector<lang::Diagnostic> warnings;    // from every frame, each distinct one once
 };
 
 // Runs `frames` of `program`. `first` is frame 0's scene when the caller has evaluated it already; `fps`

@@ -91,9 +91,9 @@ OutputTarget target_for_frame(const std::optional<std::string>& cli_pattern, con
 
 void fail_several_frames(const OutputTarget& target, int frame_a, int frame_b, bool from_cli) {
   const fs::path& path = target.path;
-  const std::string message = "'" + path.string() + "' would hold several frames (" + std::to_string(frame_a) +
-                              " and " + std::to_string(frame_b) + "), but one " + device_kind_name(target.device) +
-                              " file holds one frame";
+  const std::string message = "'" + path.string() + "' would hold several frames (" +
+                              std::to_string(frame_a) + " and " + std::to_string(frame_b) + "), but one " +
+                              device_kind_name(target.device) + " file holds one frame";
   const std::string hint = "put {frame:03} in the name to write one file per frame, e.g. '" +
                            path.stem().string() + "-{frame:03}" + path.extension().string() + "'";
   if (target.span) fail(*target.span, "output " + message, hint);

@@ -70,7 +70,8 @@ HpglProfile plotter_for(const FrameScene& scene, const DeviceOptions& d) {
   const std::string message = "unknown plotter '" + *wanted + "'";
   const std::string hint = "plotters: " + hpgl_profile_list() + declared +
                            " (or declare one: plotter NAME { base: \"hp7475a\", ... })";
-  if (!from_cli && scene.output && scene.output->plotter_span) fail(*scene.output->plotter_span, message, hint);
+  if (!from_cli && scene.output && scene.output->plotter_span)
+    fail(*scene.output->plotter_span, message, hint);
   throw RunError((from_cli ? "--plotter: " : "") + message, hint, 64);
 }
 
@@ -96,7 +97,9 @@ std::shared_ptr<const Device> device_for(DeviceKind kind, const FrameScene& scen
     case DeviceKind::Svg:
     case DeviceKind::Png: {
       CairoOptions cairo;
-      cairo.format = kind == DeviceKind::Pdf ? CairoFormat::Pdf : kind == DeviceKind::Svg ? CairoFormat::Svg : CairoFormat::Png;
+      cairo.format = kind == DeviceKind::Pdf   ? CairoFormat::Pdf
+                     : kind == DeviceKind::Svg ? CairoFormat::Svg
+                                               : CairoFormat::Png;
       cairo.pens = pen_table_for(scene, d);
       cairo.dpi = d.dpi;
       cairo.decorations = d.decorations;

@@ -17,12 +17,12 @@ namespace hlr::runtime {
 
 // What the command line decides for every frame of a run.
 struct RunSettings {
-  std::string title;                         // the script's name: captions, PDF and JSON metadata
-  int frame_count = 1;                       // of the animation, for captions
-  std::optional<std::string> camera;         // --camera NAME; else the last camera declared
-  std::optional<bool> hidden;                // --hidden; else the script's style, else off
-  std::optional<std::string> output;         // -o pattern
-  DeviceOptions device;                      // --paper, --plotter, --dpi, ...
+  std::string title;                  // the script's name: captions, PDF and JSON metadata
+  int frame_count = 1;                // of the animation, for captions
+  std::optional<std::string> camera;  // --camera NAME; else the last camera declared
+  std::optional<bool> hidden;         // --hidden; else the script's style, else off
+  std::optional<std::string> output;  // -o pattern
+  DeviceOptions device;               // --paper, --plotter, --dpi, ...
 };
 
 struct FrameSettings {

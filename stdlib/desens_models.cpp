@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "core/solid/solid_builder.hpp"
+#include "core/tolerance.hpp"
 
 namespace hlr::stdlib {
 namespace {
@@ -116,7 +117,7 @@ Solid desens_carrier() {
   // 400 ft (2.7e-3 of their size) and face 17's hull outline pokes past the deck slab's starboard notch.
   // The 1969 program never checked either; we accept both with warnings, as the thesis drew it.
   SolidBuildOptions options;
-  options.planarity_tolerance = 3e-3;
+  options.planarity_tolerance = Tolerance::kDesensCarrierPlanarity;
   options.allow_crossing_holes = true;
   return build(kCarrierNodes, std::size(kCarrierNodes), kCarrierFaces, "carrier", options);
 }

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "core/tolerance.hpp"
 #include "stdlib/generator_detail.hpp"
 #include "stdlib/generators.hpp"
 #include "stdlib/shapes.hpp"
@@ -38,8 +39,10 @@ Solid heightfield(const std::vector<std::vector<double>>& heights, double dx, do
   // Grid points (and the base) closer than the builder's coincidence tolerance would merge.
   const double extent = std::max({std::abs(lowest), std::abs(highest), base ? std::abs(*base) : 0.0,
                                   static_cast<double>(cols - 1) * dx, static_cast<double>(rows - 1) * dy});
-  require(std::min(dx, dy) > 1e-7 * extent, fn, "dx and dy are too small next to the heights");
-  require(!base || lowest - *base > 1e-7 * extent, fn, "base is too close below the lowest height");
+  require(std::min(dx, dy) > Tolerance::kGeneratorFeature * extent, fn,
+          "dx and dy are too small next to the heights");
+  require(!base || lowest - *base > Tolerance::kGeneratorFeature * extent, fn,
+          "base is too close below the lowest height");
   require(std::isfinite(crease_angle_deg) && crease_angle_deg >= 0 && crease_angle_deg <= 180, fn,
           "crease must lie in [0, 180]");
 
@@ -57,7 +60,7 @@ Solid heightfield(const std::vector<std::vector<double>>& heights, double dx, do
     for (std::size_t j = 0; j + 1 < cols; ++j) {
       const std::uint32_t a = id(i, j), b = id(i, j + 1), c = id(i + 1, j + 1), d = id(i + 1, j);
       const double warp = vertices[a].z + vertices[c].z - vertices[b].z - vertices[d].z;
-      if (std::abs(warp) <= 1e-12 * scale) {
+      if (std::abs(warp) <= Tolerance::kHeightfieldWarp * scale) {
         faces.push_back(IndexedFace{{a, b, c, d}});
       } else {
         faces.push_back(IndexedFace{{a, b, c}});

@@ -5,11 +5,11 @@
 #include <bit>
 #include <cctype>
 #include <cmath>
-#include <cstdio>
 #include <map>
 #include <optional>
 #include <unordered_map>
 
+#include "core/format_number.hpp"
 #include "core/solid/solid_builder.hpp"
 #include "core/tolerance.hpp"
 #include "stdlib/mesh_detail.hpp"
@@ -27,12 +27,6 @@ constexpr std::int64_t kTriangulationBudget = 400'000'000;
 enum class TagKind : std::int64_t { Vertex = 1, Face = 2, Line = 3 };
 std::int64_t make_tag(TagKind kind, std::size_t index) {
   return (static_cast<std::int64_t>(kind) << 40) | static_cast<std::int64_t>(index);
-}
-
-std::string number_text(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%g", v);
-  return buf;
 }
 
 // Warnings in the order found, at most kWarningsPerKind of each kind, then one line with the rest.
@@ -188,7 +182,7 @@ class Builder {
     }
     const double size = distance(lo, hi);
     // The builder's zero-area floor is kRelative · size²; dropping up to 4× that keeps us clear of it.
-    if (!(length(normal) > 4 * Tolerance::kRelative * std::max(size, 1e-300) * size)) {
+    if (!(length(normal) > 4 * Tolerance::kRelative * std::max(size, Tolerance::kFloor) * size)) {
       warnings_.add("degenerate-face",
                     at(face.where, name + " has zero area (its vertices are collinear); dropped it",
                        "remove the face from the file"));
@@ -230,7 +224,7 @@ class Builder {
       }
       warnings_.add("non-planar", at(face.where,
                                      name + " is not planar (vertex " + vertex_name(worst_vertex) + " lies " +
-                                         number_text(worst) + " off its plane); split it into " +
+                                         format_for_message(worst) + " off its plane); split it into " +
                                          std::to_string(kept) + " triangles",
                                      "the split lines are drawn unless a crease angle hides them; model the "
                                      "polygon as planar faces to avoid them"));

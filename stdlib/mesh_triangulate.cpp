@@ -58,7 +58,7 @@ bool triangulate(const std::vector<Point3>& points, const std::vector<std::uint3
     convex = t > eps;
     turning += std::atan2(t, dot(p[i] - p[a], p[c] - p[i]));
   }
-  if (convex && std::abs(turning - 2 * std::numbers::pi) < 1e-6) {
+  if (convex && std::abs(turning - 2 * std::numbers::pi) < Tolerance::kTurning) {
     for (std::size_t i = 1; i + 1 < n; ++i) out.push_back({ring[0], ring[i], ring[i + 1]});
     return true;
   }

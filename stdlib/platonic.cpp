@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "core/tolerance.hpp"
 #include "stdlib/generator_detail.hpp"
 #include "stdlib/generators.hpp"
 #include "stdlib/shapes.hpp"
@@ -25,7 +26,7 @@ constexpr double kPhi = std::numbers::phi;
 std::vector<IndexedFace> hull_faces(const std::vector<Point3>& v) {
   double extent = 0;
   for (const Point3& p : v) extent = std::max(extent, length(to_vector(p)));
-  const double tol = 1e-9 * extent;
+  const double tol = Tolerance::kRelative * extent;  // on a hull plane: coincidence
   std::set<std::vector<std::uint32_t>> seen;
   std::vector<IndexedFace> faces;
   const auto n = static_cast<std::uint32_t>(v.size());

@@ -6,11 +6,11 @@
 #include <cmath>
 #include <cstdint>
 #include <numbers>
-#include <sstream>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "core/format_number.hpp"
 #include "core/tolerance.hpp"
 #include "stdlib/generator_detail.hpp"
 #include "stdlib/generators.hpp"
@@ -25,9 +25,7 @@ namespace {
 bool on_axis(Point2 p) { return p.x == 0; }
 
 std::string point_text(Point2 p) {
-  std::ostringstream s;
-  s << "(" << p.x << ", " << p.y << ")";
-  return s.str();
+  return "(" + format_for_message(p.x) + ", " + format_for_message(p.y) + ")";
 }
 
 // The profile in one of three normal forms (see shapes.hpp): a closed loop off the axis, an open polyline
@@ -117,7 +115,7 @@ Solid revolve(const std::vector<Point2>& profile_in, int segments, double angle_
   const double spread =
       full ? std::sin(step / 2) : std::min(std::sin(step / 2), std::sin(angle_deg * std::numbers::pi / 360));
   for (const Point2& q : p)
-    require(on_axis(q) || 2 * q.x * spread > 1e-7 * extent, fn,
+    require(on_axis(q) || 2 * q.x * spread > Tolerance::kGeneratorFeature * extent, fn,
             "profile point " + point_text(q) + " is too close to the axis for " + std::to_string(segments) +
                 " segments; put it on the axis (r = 0) or further away");
 

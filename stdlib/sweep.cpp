@@ -9,10 +9,10 @@
 #include <cmath>
 #include <cstdint>
 #include <numbers>
-#include <sstream>
 #include <string>
 #include <vector>
 
+#include "core/format_number.hpp"
 #include "core/tolerance.hpp"
 #include "stdlib/generator_detail.hpp"
 #include "stdlib/generators.hpp"
@@ -45,7 +45,8 @@ Frame orthonormal(Vector3 x, Vector3 t) {
 
 Frame initial_frame(Vector3 t) {
   Vector3 up{0, 0, 1};
-  if (length(up - dot(up, t) * t) < 1e-6) up = {0, 1, 0};  // vertical start: keep the profile's x–y
+  // A vertical start keeps the profile's x–y.
+  if (length(up - dot(up, t) * t) < Tolerance::kSweepVertical) up = {0, 1, 0};
   const Vector3 y = normalize(up - dot(up, t) * t);
   return {cross(y, t), y};
 }
@@ -80,7 +81,8 @@ Solid sweep(const std::vector<Point2>& profile_in, const std::vector<Point3>& pa
   double extent = profile_size;
   for (const Point3& q : path) extent = std::max({extent, std::abs(q.x), std::abs(q.y), std::abs(q.z)});
   // Far from the origin a tiny profile's corners would merge into one vertex.
-  require(profile_size > 1e-7 * extent, fn, "profile is too small next to the path's coordinates");
+  require(profile_size > Tolerance::kGeneratorFeature * extent, fn,
+          "profile is too small next to the path's coordinates");
 
   std::vector<Vector3> t(segments);
   for (std::size_t i = 0; i < segments; ++i) {
@@ -92,7 +94,8 @@ Solid sweep(const std::vector<Point2>& profile_in, const std::vector<Point3>& pa
   // Joint j joins segment j − 1 to segment j (all joints of a closed path, the inner ones otherwise).
   auto incoming = [&](std::size_t j) { return (j + segments - 1) % segments; };
   for (std::size_t j = closed ? 0 : 1; j < (closed ? m : m - 1); ++j)
-    require(dot(t[incoming(j)], t[j]) > -1 + 1e-12, fn, "path reverses at point " + std::to_string(j));
+    require(dot(t[incoming(j)], t[j]) > -1 + Tolerance::kSweepReversal, fn,
+            "path reverses at point " + std::to_string(j));
 
   std::vector<Frame> frames = {initial_frame(t[0])};
   for (std::size_t i = 1; i < segments; ++i)
@@ -101,10 +104,8 @@ Solid sweep(const std::vector<Point2>& profile_in, const std::vector<Point3>& pa
     // Round the loop the frame must come back to itself, or the last section would not match the first.
     const Vector3 back = orthonormal(rotate_between(frames.back().x, t.back(), t[0]), t[0]).x;
     const double twist = std::atan2(dot(cross(frames[0].x, back), t[0]), dot(frames[0].x, back));
-    std::ostringstream degrees;
-    degrees << twist * 180 / std::numbers::pi;
-    require(std::abs(twist) < 1e-9, fn,
-            "path is closed but twists the profile by " + degrees.str() +
+    require(std::abs(twist) < Tolerance::kSweepTwist, fn,
+            "path is closed but twists the profile by " + format_for_message(twist * 180 / std::numbers::pi) +
                 "\u00b0 round the loop (it is not planar), so no mitred ring with flat faces exists; use an "
                 "open path or a planar closed one");
   }
@@ -128,7 +129,7 @@ Solid sweep(const std::vector<Point2>& profile_in, const std::vector<Point3>& pa
     for (std::size_t k = 0; k < n; ++k) {
       const double from = dot(vertices[i * n + k] - path[i], t[i]);
       const double to = dot(vertices[next * n + k] - path[i], t[i]);
-      require(to - from > 1e-6 * profile_size, fn,
+      require(to - from > Tolerance::kSweepMitre * profile_size, fn,
               "path segment " + std::to_string(i) + "\u2013" + std::to_string(next) +
                   " is too short for the profile at its corners: the mitred ends would cross");
     }

@@ -13,6 +13,7 @@
 #include "core/geometry/affine3.hpp"
 #include "core/geometry/rect2.hpp"
 #include "core/geometry/vector.hpp"
+#include "core/tolerance.hpp"
 
 namespace hlr {
 
@@ -21,11 +22,12 @@ enum class Projection { Perspective, Orthographic };
 struct Camera {
   std::string kind = "lookat";  // the constructor that made it: lookat, ortho, orbit, desens
   Projection projection = Projection::Perspective;
-  Affine3 viewFromWorld;        // world → (right, up, depth); may be mirror-handed (Albers' eye system)
-  double focal = 1;             // picture units per (right/depth) or, orthographic, per world unit
-  Vector2 offset{};             // added after projection
-  double near_depth = 1e-3;     // perspective near plane, in view depth units (> 0)
-  std::optional<Rect2> frame;   // picture frame: drawn pieces are clipped to it (Desens' WINDOW)
+  Affine3 viewFromWorld;  // world → (right, up, depth); may be mirror-handed (Albers' eye system)
+  double focal = 1;       // picture units per (right/depth) or, orthographic, per world unit
+  Vector2 offset{};       // added after projection
+  // Perspective near plane, in view depth units (> 0).
+  double near_depth = Tolerance::kDefaultNearDepth;
+  std::optional<Rect2> frame;  // picture frame: drawn pieces are clipped to it (Desens' WINDOW)
 
   // World-space eye position (perspective) and unit viewing direction (both projections).
   Point3 eye_world() const;

@@ -3,10 +3,11 @@
 //   bad argument 'fov' to lookat(): must be between 0 and 180 degrees (got 190)
 #pragma once
 
-#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <utility>
+
+#include "core/format_number.hpp"
 
 namespace hlr {
 
@@ -19,12 +20,8 @@ struct CameraError : std::invalid_argument {
         function(std::move(function_)),
         parameter(std::move(parameter_)) {}
 
-  // "(got 190)": the offending value with up to 6 significant digits, as a user would have typed it.
-  static std::string got(double value) {
-    std::ostringstream s;
-    s << "(got " << value << ")";
-    return s.str();
-  }
+  // "(got 190)": the offending value as a user would have typed it.
+  static std::string got(double value) { return "(got " + format_for_message(value) + ")"; }
 };
 
 }  // namespace hlr

@@ -52,7 +52,7 @@ Camera lookat_camera(const LookatParameters& p) {
   c.focal = 1 / std::tan(p.fov_deg * std::numbers::pi / 360);
   c.offset = {};
   // Default near plane: close enough never to cut a visible object, far enough to keep 1/depth tame.
-  c.near_depth = p.near > 0 ? p.near : 1e-4 * distance(p.target, p.eye);
+  c.near_depth = p.near > 0 ? p.near : Tolerance::kLookatNearFraction * distance(p.target, p.eye);
   return c;
 }
 

@@ -17,7 +17,7 @@ struct LookatParameters {
   Vector3 up{0, 0, 1};
   double fov_deg = 40;  // vertical field of view: the picture spans [−1, 1] vertically
   double aspect = 0;    // > 0: frame [−aspect, aspect] × [−1, 1]; 0: no frame clip
-  double near = 0;      // near-plane depth; 0: 1e-4·|target − eye|
+  double near = 0;      // near-plane depth; 0: Tolerance::kLookatNearFraction·|target − eye|
 };
 
 // focal = 1/tan(fov/2). Throws CameraError naming the parameter: eye == target, up zero or parallel to the

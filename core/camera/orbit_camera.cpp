@@ -25,7 +25,7 @@ Camera orbit_camera(const OrbitParameters& p) {
       Affine3::from_rows({-st, ct, 0}, {-ct * cp, -st * cp, sp}, {-ct * sp, -st * sp, -cp}, {0, 0, p.rho});
   c.focal = p.d;
   c.offset = {};
-  c.near_depth = 1e-6 * p.rho;
+  c.near_depth = Tolerance::kOrbitNearFraction * p.rho;
   c.frame.reset();
   return c;
 }

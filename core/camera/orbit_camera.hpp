@@ -18,9 +18,9 @@ struct OrbitParameters {
   double d = 1549;        // screen distance: image scale without changing perspective
 };
 
-// Camera with (right, up, depth) = (Xe, Ye, Ze), focal = D, no frame. near_depth = 1e-6·ρ: Albers never
-// clips at the eye, so the near plane only keeps the division defined, as close to the eye as is safe.
-// Throws CameraError when rho or d is not positive or any value is not finite.
+// Camera with (right, up, depth) = (Xe, Ye, Ze), focal = D, no frame. The near plane lies at
+// Tolerance::kOrbitNearFraction·ρ: Albers never clips at the eye, so it only keeps the division defined, as
+// close to the eye as is safe. Throws CameraError when rho or d is not positive or any value is not finite.
 Camera orbit_camera(const OrbitParameters& p);
 
 }  // namespace hlr

@@ -7,14 +7,16 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <map>
 #include <memory>
 #include <span>
-#include <sstream>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 
 #include "core/device/atomic_file.hpp"
 #include "core/device/page_layout.hpp"
+#include "core/format_number.hpp"
 #include "core/geometry/clip2d.hpp"
 
 namespace hlr {
@@ -29,11 +31,6 @@ constexpr double kCaptionPt = 10;
 // are drawn whole and cairo never sees coordinates beyond its fixed-point range.
 constexpr double kClipPadMm = 10;
 
-std::string number(double v) {
-  std::ostringstream s;
-  s << v;
-  return s.str();
-}
 
 const char* format_name(CairoFormat f) {
   switch (f) {
@@ -227,6 +224,31 @@ cairo_status_t append_to_string(void* closure, const unsigned char* data, unsign
   return CAIRO_STATUS_SUCCESS;
 }
 
+// cairo names an SVG's groups after its surfaces' serial numbers, which count every surface the process
+// has made: renumbered in order of appearance, the text no longer depends on what ran before or beside.
+std::string renumber_surface_ids(const std::string& svg) {
+  static constexpr std::string_view kWord = "surface";
+  std::string out;
+  out.reserve(svg.size());
+  std::map<std::string, int, std::less<>> ids;
+  std::size_t i = 0;
+  while (i < svg.size()) {
+    const std::size_t at = svg.find(kWord, i);
+    if (at == std::string::npos) break;
+    std::size_t end = at + kWord.size();
+    while (end < svg.size() && svg[end] >= '0' && svg[end] <= '9') ++end;
+    out.append(svg, i, at + kWord.size() - i);
+    if (end > at + kWord.size()) {
+      const auto [it, added] = ids.emplace(svg.substr(at + kWord.size(), end - at - kWord.size()),
+                                           static_cast<int>(ids.size()) + 1);
+      out += std::to_string(it->second);
+    }
+    i = end;
+  }
+  out.append(svg, i, std::string::npos);
+  return out;
+}
+
 std::string svg_bytes(const PlotPage& page, const CairoOptions& o) {
   std::string bytes;
   // In cairo ≥ 1.16 the document unit makes the size given here millimetres and one user unit 1 mm.
@@ -234,7 +256,7 @@ std::string svg_bytes(const PlotPage& page, const CairoOptions& o) {
   check(cairo_surface_status(surface.p));
   cairo_svg_surface_set_document_unit(surface.p, CAIRO_SVG_UNIT_MM);
   draw_all(surface.p, std::span(&page, 1), o, 1, [](cairo_t*, const PlotPage&) {});
-  return bytes;
+  return renumber_surface_ids(bytes);
 }
 
 std::string png_bytes(const PlotPage& page, const CairoOptions& o) {
@@ -275,18 +297,18 @@ std::optional<CairoFormat> cairo_format_for(const std::filesystem::path& target)
 
 PixelSize png_pixel_size(const PlotPage& page, double dpi) {
   if (!(std::isfinite(dpi) && dpi > 0))
-    throw DeviceError("dpi must be finite and positive, got " + number(dpi));
+    throw DeviceError("dpi must be finite and positive, got " + format_for_message(dpi));
   const double w = page.width_mm * dpi / kMmPerInch, h = page.height_mm * dpi / kMmPerInch;
   const double pw = std::max(1.0, std::round(w)), ph = std::max(1.0, std::round(h));
   if (!(pw <= kMaxPngSide && ph <= kMaxPngSide && pw * ph <= kMaxPngMegapixels * 1e6)) {
     // The largest dpi both limits allow on this page, rounded down to be safe.
     const double by_side = kMaxPngSide * kMmPerInch / std::max(page.width_mm, page.height_mm);
     const double by_area = std::sqrt(kMaxPngMegapixels * 1e6 / (page.width_mm * page.height_mm)) * kMmPerInch;
-    throw DeviceError("a " + number(page.width_mm) + " x " + number(page.height_mm) + " mm page at " +
-                      number(dpi) + " dpi is " + number(pw) + " x " + number(ph) +
-                      " pixels; PNG output is limited to " + number(kMaxPngMegapixels) + " megapixels and " +
+    throw DeviceError("a " + format_for_message(page.width_mm) + " x " + format_for_message(page.height_mm) + " mm page at " +
+                      format_for_message(dpi) + " dpi is " + format_for_message(pw) + " x " + format_for_message(ph) +
+                      " pixels; PNG output is limited to " + format_for_message(kMaxPngMegapixels) + " megapixels and " +
                       std::to_string(kMaxPngSide) + " pixels a side: lower the dpi to at most " +
-                      number(std::floor(0.999 * std::min(by_side, by_area))));
+                      format_for_message(std::floor(0.999 * std::min(by_side, by_area))));
   }
   return {static_cast<long>(pw), static_cast<long>(ph)};
 }

@@ -24,9 +24,9 @@ namespace hlr {
 
 // How the pen plan of a page for this device is made (PlanOptions' device-given fields).
 struct DevicePlanning {
-  double grid_mm = 0.025;  // endpoints snap to the device's unit
-  Point2 home{0, 0};       // where the pen starts and ends, page mm
-  PlotterSpeeds speeds;    // for the plotting-time estimate
+  double grid_mm = 0.025;    // endpoints snap to the device's unit
+  Point2 home{0, 0};         // where the pen starts and ends, page mm
+  PlotterSpeeds speeds;      // for the plotting-time estimate
   double min_margin_mm = 0;  // the pen reaches no closer to the sheet's edge: the layout keeps this margin
 };
 
@@ -43,9 +43,9 @@ struct DeviceFrame {
 
 // A frame's share of a file, made by encode() on any thread.
 struct EncodedFrame {
-  std::string bytes;              // what the file gets for this frame
-  std::optional<PlotPage> page;   // PDF: the page to draw (cairo's PDF writer is sequential)
-  std::string file_head;          // JSON: the document's opening, written before the first frame
+  std::string bytes;             // what the file gets for this frame
+  std::optional<PlotPage> page;  // PDF: the page to draw (cairo's PDF writer is sequential)
+  std::string file_head;         // JSON: the document's opening, written before the first frame
 };
 
 // A file being written: frames arrive in frame order on one thread. finish() completes it; a file that

@@ -122,7 +122,8 @@ class CairoDevice : public Device {
 
 class HpglDevice : public Device {
  public:
-  HpglDevice(HpglProfile profile, HpglOptions options) : profile_(std::move(profile)), o_(std::move(options)) {
+  HpglDevice(HpglProfile profile, HpglOptions options)
+      : profile_(std::move(profile)), o_(std::move(options)) {
     check_hpgl_profile(profile_);
   }
   const char* name() const override { return "HPGL"; }
@@ -140,7 +141,9 @@ class HpglDevice : public Device {
   EncodedFrame encode(const DeviceFrame& frame) const override {
     return {to_hpgl(frame.plot.page, profile_, o_), std::nullopt, {}};
   }
-  std::unique_ptr<DeviceFile> open(const fs::path& path) const override { return std::make_unique<ByteFile>(path); }
+  std::unique_ptr<DeviceFile> open(const fs::path& path) const override {
+    return std::make_unique<ByteFile>(path);
+  }
 
  private:
   HpglProfile profile_;
@@ -163,7 +166,9 @@ class StepDevice : public Device {
   EncodedFrame encode(const DeviceFrame& frame) const override {
     return {to_plotter_steps(frame.plot.page, o_), std::nullopt, {}};
   }
-  std::unique_ptr<DeviceFile> open(const fs::path& path) const override { return std::make_unique<ByteFile>(path); }
+  std::unique_ptr<DeviceFile> open(const fs::path& path) const override {
+    return std::make_unique<ByteFile>(path);
+  }
 
  private:
   StepOptions o_;
@@ -178,7 +183,8 @@ class JsonDevice : public Device {
   EncodedFrame encode(const DeviceFrame& frame) const override {
     JsonOptions o = o_;
     o.include_hidden = o_.include_hidden || frame.include_hidden;
-    const JsonFrame f{frame.frame, frame.time, *frame.camera, *frame.segments, *frame.object_names, frame.plot};
+    const JsonFrame f{frame.frame,     frame.time,          *frame.camera,
+                      *frame.segments, *frame.object_names, frame.plot};
     EncodedFrame out;
     out.bytes = json_frame_text(f, o);
     out.file_head = json_document_head(frame.plot.page, o_);

@@ -9,13 +9,13 @@
 #include <vector>
 
 #include "core/device/atomic_file.hpp"
+#include "core/format_number.hpp"
 #include "core/geometry/clip2d.hpp"
+#include "core/limits.hpp"
+#include "core/tolerance.hpp"
 
 namespace hlr {
 namespace {
-
-constexpr double kSizeTolerance = 0.5;  // mm between a page and a range's sheet that still match
-constexpr long kMaxStep = 32000;        // longest relative step written (HP-GL integers: ±32767)
 
 struct IPoint {
   long x = 0, y = 0;
@@ -28,15 +28,7 @@ bool equal_ignoring_case(std::string_view a, std::string_view b) {
          std::equal(a.begin(), a.end(), b.begin(), [&](char x, char y) { return lower(x) == lower(y); });
 }
 
-// A millimetre figure for messages: one decimal, no trailing ".0".
-std::string mm(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, std::fabs(v) < 1e9 ? "%.1f" : "%.3g", v);
-  std::string s = buf;
-  if (s.size() > 2 && s.compare(s.size() - 2, 2, ".0") == 0) s.resize(s.size() - 2);
-  if (s == "-0") s = "0";
-  return s;
-}
+std::string mm(double v) { return format_mm_for_message(v); }
 
 // The page on one of the profile's sheets: page mm ↔ plotter units, and the integer area the pen reaches.
 struct Placement {
@@ -82,7 +74,7 @@ struct Placement {
 };
 
 bool same_size(double w, double h, double sw, double sh) {
-  return std::fabs(w - sw) <= kSizeTolerance && std::fabs(h - sh) <= kSizeTolerance;
+  return std::fabs(w - sw) <= Tolerance::kPaperMatchMm && std::fabs(h - sh) <= Tolerance::kPaperMatchMm;
 }
 
 Placement place(const HpglProfile& profile, double page_w, double page_h, std::string_view paper) {
@@ -138,7 +130,7 @@ Placement place(const HpglProfile& profile, double page_w, double page_h, std::s
   pl.ox = r.origin_x_mm;
   pl.oy = r.origin_y_mm;
   // The limits, and never off the sheet (clamped before the cast: the limits lie within ±32768 anyway).
-  const double eps = 1e-6;
+  const double eps = Tolerance::kPlotterUnitSnap;
   const auto whole = [](double v) { return static_cast<long>(std::clamp(v, -1e9, 1e9)); };
   pl.ax_min = std::max(r.x_min, whole(std::ceil(-pl.ox / pl.unit - eps)));
   pl.ax_max = std::min(r.x_max, whole(std::floor((pl.sheet_w - pl.ox) / pl.unit + eps)));
@@ -243,14 +235,14 @@ class Emitter {
   }
 
  private:
-  // The pairs that move the pen from at_ to `to` (relative: differences, split to stay within ±kMaxStep).
+  // The pairs that move the pen from at_ to `to` (relative: differences, split to stay within ±kHpglMaxStep).
   std::vector<IPoint> steps(IPoint to) {
     if (!relative_) {
       at_ = to;
       return {to};
     }
     const long dx = to.x - at_.x, dy = to.y - at_.y;
-    const long n = std::max(1L, (std::max(std::labs(dx), std::labs(dy)) + kMaxStep - 1) / kMaxStep);
+    const long n = std::max(1L, (std::max(std::labs(dx), std::labs(dy)) + kHpglMaxStep - 1) / kHpglMaxStep);
     std::vector<IPoint> out;
     IPoint prev = at_;
     for (long k = 1; k <= n; ++k) {
@@ -303,8 +295,9 @@ std::string to_hpgl(const PlotPage& page, const HpglProfile& profile, const Hpgl
   std::optional<double> velocity = profile.velocity_cm_s;
   if (options.velocity_cm_s) {
     const double v = *options.velocity_cm_s;
-    if (!(v == 0 || (v >= 0.01 && v <= 1000)))
-      throw DeviceError("HPGL: the velocity must be 0.01…1000 cm/s, or 0 for the plotter's own");
+    if (!(v == 0 || (v >= kMinVelocityCmS && v <= kMaxVelocityCmS)))
+      throw DeviceError("HPGL: the velocity must be " + format_for_message(kMinVelocityCmS) + "…" +
+                        format_for_message(kMaxVelocityCmS) + " cm/s, or 0 for the plotter's own");
     velocity = v > 0 ? options.velocity_cm_s : std::nullopt;
   }
 

@@ -1,9 +1,10 @@
 #include "core/device/hpgl_profile.hpp"
 
 #include <cmath>
-#include <cstdio>
 
 #include "core/device/atomic_file.hpp"
+#include "core/format_number.hpp"
+#include "core/limits.hpp"
 
 namespace hlr {
 namespace {
@@ -126,13 +127,7 @@ bool equal_ignoring_case(std::string_view a, std::string_view b) {
   return true;
 }
 
-std::string mm(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, std::fabs(v) < 1e9 ? "%.1f" : "%.3g", v);
-  std::string s = buf;
-  if (s.size() > 2 && s.compare(s.size() - 2, 2, ".0") == 0) s.resize(s.size() - 2);
-  return s;
-}
+std::string mm(double v) { return format_mm_for_message(v); }
 
 }  // namespace
 
@@ -171,7 +166,7 @@ std::string hpgl_paper_list(const HpglProfile& profile) {
 void check_hpgl_profile(const HpglProfile& p) {
   const std::string who = "plotter '" + p.name + "': ";
   if (!(std::isfinite(p.unit_mm) && p.unit_mm > 0))
-    throw DeviceError(who + "the unit must be a positive length in mm, not " + std::to_string(p.unit_mm));
+    throw DeviceError(who + "the unit must be a positive length in mm, not " + format_for_message(p.unit_mm));
   if (p.ranges.empty()) throw DeviceError(who + "no paper range");
   for (const HpglPaperRange& r : p.ranges) {
     const std::string where = who + "paper '" + r.paper + "': ";
@@ -180,17 +175,19 @@ void check_hpgl_profile(const HpglProfile& p) {
       throw DeviceError(where + "the sheet size must be positive (or 0 × 0 for any size)");
     if (!(std::isfinite(r.origin_x_mm) && std::isfinite(r.origin_y_mm)))
       throw DeviceError(where + "the origin offset must be finite");
-    const auto in16 = [](long v) { return v >= -32768 && v <= 32767; };
+    const auto in16 = [](long v) { return v >= kHpglMinCoordinate && v <= kHpglMaxCoordinate; };
     if (!(in16(r.x_min) && in16(r.x_max) && in16(r.y_min) && in16(r.y_max)))
-      throw DeviceError(where + "the range must lie within -32768…32767 plotter units");
+      throw DeviceError(where + "the range must lie within " + std::to_string(kHpglMinCoordinate) + "…" +
+                        std::to_string(kHpglMaxCoordinate) + " plotter units");
     if (!(r.x_min < r.x_max && r.y_min < r.y_max))
       throw DeviceError(where + "the range is empty (x " + std::to_string(r.x_min) + "…" +
                         std::to_string(r.x_max) + ", y " + std::to_string(r.y_min) + "…" +
                         std::to_string(r.y_max) + ")");
   }
   if (p.pen_count < 1) throw DeviceError(who + "needs at least one pen");
-  if (p.velocity_cm_s && !(*p.velocity_cm_s >= 0.01 && *p.velocity_cm_s <= 1000))
-    throw DeviceError(who + "the velocity must be 0.01…1000 cm/s");
+  if (p.velocity_cm_s && !(*p.velocity_cm_s >= kMinVelocityCmS && *p.velocity_cm_s <= kMaxVelocityCmS))
+    throw DeviceError(who + "the velocity must be " + format_for_message(kMinVelocityCmS) + "…" +
+                      format_for_message(kMaxVelocityCmS) + " cm/s");
   if (p.max_pairs_per_pd < 1) throw DeviceError(who + "at least one coordinate pair per PD is needed");
 }
 

@@ -5,11 +5,11 @@
 #include <charconv>
 #include <cmath>
 #include <limits>
-#include <sstream>
 #include <string>
 #include <utility>
 
 #include "core/device/atomic_file.hpp"
+#include "core/format_number.hpp"
 
 namespace hlr {
 namespace {
@@ -66,11 +66,7 @@ std::optional<double> take_decimal(std::string_view& text) {
   return value;
 }
 
-std::string mm(double v) {
-  std::ostringstream s;
-  s << v;
-  return s.str();
-}
+std::string mm(double v) { return format_for_message(v); }
 
 }  // namespace
 

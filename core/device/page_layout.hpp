@@ -16,6 +16,7 @@
 #include "core/geometry/rect2.hpp"
 #include "core/geometry/vector.hpp"
 #include "core/hlr/visible_segment.hpp"
+#include "core/limits.hpp"  // kMaxPaperSideMm, the largest sheet side check_page_spec() accepts
 
 namespace hlr {
 
@@ -36,9 +37,6 @@ const std::vector<std::string_view>& paper_names();
 // portrait is 200 × 300 mm; a square sheet is unchanged). Only the spelling is checked here: nullopt for
 // an unknown name or malformed size; zero or oversized sheets parse and are rejected by check_page_spec().
 std::optional<Paper> parse_paper(std::string_view text, bool landscape);
-
-// The largest sheet side check_page_spec() accepts (10 m: far beyond any plotter, well inside cairo).
-constexpr double kMaxPaperSideMm = 10000;
 
 struct PageSpec {
   // A constructor rather than an aggregate, so that {paper, margin} leaves the scale unset without

@@ -1,5 +1,7 @@
 #include "core/device/page_plot.hpp"
 
+#include "core/limits.hpp"
+
 #include <cmath>
 
 #include "core/device/atomic_file.hpp"
@@ -15,7 +17,8 @@ Point2 page_point(const PageLayout& layout, Point2 picture) {
 }
 
 int checked_pen(int pen) {
-  if (pen < 1 || pen > 255) throw DeviceError("pen " + std::to_string(pen) + " is outside 1..255");
+  if (pen < 1 || pen > kMaxPen)
+    throw DeviceError("pen " + std::to_string(pen) + " is outside 1.." + std::to_string(kMaxPen));
   return pen;
 }
 

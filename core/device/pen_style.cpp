@@ -2,9 +2,10 @@
 
 #include <array>
 #include <cmath>
-#include <sstream>
 #include <stdexcept>
 #include <string>
+
+#include "core/format_number.hpp"
 
 namespace hlr {
 namespace {
@@ -58,11 +59,7 @@ Colour from_rgb(unsigned rgb) {
 
 bool unit_interval(double v) { return v >= 0 && v <= 1; }  // false for NaN
 
-std::string number(double v) {
-  std::ostringstream s;
-  s << v;
-  return s.str();
-}
+std::string number(double v) { return format_for_message(v); }
 
 void check_pen(int pen) {
   if (pen < 1) throw std::invalid_argument("pen numbers start at 1, got " + std::to_string(pen));

@@ -1,5 +1,8 @@
 #include "core/device/step_device.hpp"
 
+#include "core/format_number.hpp"
+#include "core/limits.hpp"
+
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -51,8 +54,9 @@ class Tape {
 }  // namespace
 
 std::string to_plotter_steps(const PlotPage& page, const StepOptions& o, StepCounts* counts_out) {
-  if (!(std::isfinite(o.step_mm) && o.step_mm >= 0.001 && o.step_mm <= 10))
-    throw DeviceError("the plotter step must be between 0.001 and 10 mm");
+  if (!(std::isfinite(o.step_mm) && o.step_mm >= kMinPlotterStepMm && o.step_mm <= kMaxPlotterStepMm))
+    throw DeviceError("the plotter step must be between " + format_for_message(kMinPlotterStepMm) + " and " +
+                      format_for_message(kMaxPlotterStepMm) + " mm");
   if (!(std::isfinite(page.width_mm) && std::isfinite(page.height_mm) && page.width_mm > 0 &&
         page.height_mm > 0))
     throw DeviceError("the page size must be finite and positive");

@@ -3,12 +3,14 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/tolerance.hpp"
+
 namespace hlr {
 
 FaceGrid::FaceGrid(const std::vector<Occluder>& occluders, const Rect2& domain) : domain_(domain) {
   if (occluders.empty() || domain.empty()) return;
   // About one cell per occluder, shaped like the domain, at most 2048 a side.
-  const double w = std::max(domain.width(), 1e-300), h = std::max(domain.height(), 1e-300);
+  const double w = std::max(domain.width(), Tolerance::kFloor), h = std::max(domain.height(), Tolerance::kFloor);
   const double cells = std::clamp(static_cast<double>(occluders.size()), 1.0, 2048.0 * 2048.0);
   nx_ = static_cast<int>(std::clamp(std::ceil(std::sqrt(cells * w / h)), 1.0, 2048.0));
   ny_ = static_cast<int>(std::clamp(std::ceil(cells / nx_), 1.0, 2048.0));

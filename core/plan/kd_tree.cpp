@@ -6,6 +6,8 @@
 #include <numeric>
 #include <utility>
 
+#include "core/tolerance.hpp"
+
 namespace hlr::plan {
 namespace {
 // Plain (not value-initialised) scratch entries: the query arrays live on the stack, uncleared.
@@ -176,7 +178,8 @@ void all_k_nearest(const std::vector<Pt>& points, std::size_t k, std::vector<std
     xmin = std::min(xmin, p.x), xmax = std::max(xmax, p.x);
     ymin = std::min(ymin, p.y), ymax = std::max(ymax, p.y);
   }
-  const double w = std::max(xmax - xmin, 1e-9), h = std::max(ymax - ymin, 1e-9);
+  const double w = std::max(xmax - xmin, Tolerance::kPlanGridExtent),
+               h = std::max(ymax - ymin, Tolerance::kPlanGridExtent);
   double cell = std::sqrt(0.5 * std::max(w, h / 1e6) * std::max(h, w / 1e6) / static_cast<double>(n));
   std::int64_t nx, ny;
   for (;;) {

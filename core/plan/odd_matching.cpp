@@ -7,6 +7,8 @@
 #include <limits>
 #include <stdexcept>
 
+#include "core/tolerance.hpp"
+
 namespace hlr::plan {
 namespace {
 
@@ -133,7 +135,7 @@ Pairs heuristic_matching(const std::vector<Pt>& p, std::vector<std::uint32_t>* n
       const std::uint32_t mc = mate[c];
       if (mc == a || c == ma) continue;
       const double gain = dam + dist(p[c], p[mc]) - dac - dist(p[ma], p[mc]);
-      if (gain > 1e-9 * (dam + 1)) {
+      if (gain > Tolerance::kPlanMatchingGain * (dam + 1)) {
         mate[a] = c, mate[c] = a, mate[ma] = mc, mate[mc] = ma;
         for (std::uint32_t v : {a, c, ma, mc})
           if (!queued[v]) queued[v] = 1, queue.push_back(v);

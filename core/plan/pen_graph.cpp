@@ -5,6 +5,8 @@
 #include <cmath>
 #include <numeric>
 
+#include "core/tolerance.hpp"
+
 namespace hlr::plan {
 namespace {
 
@@ -172,7 +174,8 @@ PenGraph build_pen_graph(std::span<const GridSegment> segments, double tolerance
 
   // 3. Split every piece at the vertices on it.
   const double tol2 = tolerance * tolerance;
-  const double reach = tolerance * std::sqrt(2.0) + 1e-9;  // across the minor axis, per unit of major axis
+  const double reach = tolerance * std::sqrt(2.0) +
+                       Tolerance::kPlanReachSlack;  // across the minor axis, per unit of major axis
   std::vector<Split> splits;
   std::vector<GraphEdge> raw;  // sub-pieces, u < v, possibly repeated
   raw.reserve(pieces.size() + pieces.size() / 4);

@@ -4,11 +4,13 @@
 #include <cmath>
 #include <deque>
 
+#include "core/tolerance.hpp"
+
 namespace hlr::plan {
 namespace {
 
 constexpr std::uint32_t kNone = ~0u;
-constexpr double kGainEps = 1e-7;  // grid units: a move must gain more than this
+constexpr double kGainEps = Tolerance::kPlanGain;
 // A 2-opt or Or-opt move may rewrite at most this many tour positions (the shorter arc): windowed moves.
 constexpr std::size_t kMaxRewrite = 25000;
 

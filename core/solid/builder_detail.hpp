@@ -11,6 +11,7 @@
 #include <utility>
 #include <vector>
 
+#include "core/format_number.hpp"
 #include "core/solid/face_geometry.hpp"
 #include "core/solid/solid.hpp"
 #include "core/solid/solid_builder.hpp"
@@ -35,9 +36,6 @@ class Diagnostics {
   std::vector<SolidDiagnostic>& out_;
   bool has_errors_ = false;
 };
-
-// Shortest decimal text of a number for messages: "0.25", "1e-06", "nan".
-std::string format_number(double value);
 
 inline constexpr VertexIndex kNoVertex = 0xffffffffu;
 

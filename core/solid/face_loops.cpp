@@ -260,18 +260,18 @@ bool prepare_face(FaceWork& work, bool from_loop, int number, std::int64_t tag, 
   const double allowed = options.planarity_tolerance * face_size;
   if (worst > Tolerance::kPlanarity * face_size) {  // messages are built only when needed
     const std::string deviation = name + " is not planar: vertex " + vertices.id(worst_vertex) + " lies " +
-                                  format_number(worst) + " off the face's mean plane";
+                                  format_for_message(worst) + " off the face's mean plane";
     if (worst > allowed) {
       diagnostics.error("non-planar",
-                        deviation + " (tolerance " + format_number(options.planarity_tolerance) +
+                        deviation + " (tolerance " + format_for_message(options.planarity_tolerance) +
                             " × face size); split it into planar faces",
                         tag);
       return false;
     }
     diagnostics.warning("non-planar",
-                        deviation + " (more than " + format_number(Tolerance::kPlanarity) +
+                        deviation + " (more than " + format_for_message(Tolerance::kPlanarity) +
                             " × face size, accepted by the planarity tolerance " +
-                            format_number(options.planarity_tolerance) +
+                            format_for_message(options.planarity_tolerance) +
                             "); drawings may be slightly off near it",
                         tag);
   }

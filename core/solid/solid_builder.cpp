@@ -5,7 +5,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <sstream>
 #include <stdexcept>
 
 #include "core/solid/builder_detail.hpp"
@@ -13,14 +12,6 @@
 namespace hlr {
 
 namespace solid_detail {
-
-std::string format_number(double value) {
-  if (std::isnan(value)) return "nan";
-  if (std::isinf(value)) return value > 0 ? "inf" : "-inf";
-  std::ostringstream out;
-  out << value;  // six significant digits, %g style: 0.25, 1e-06
-  return out.str();
-}
 
 namespace {
 

@@ -224,7 +224,8 @@ VertexTable resolve_vertices(const std::vector<Point3>& positions, Tags tags,
       const double bad = !std::isfinite(p.x) ? p.x : (!std::isfinite(p.y) ? p.y : p.z);
       diagnostics.error(
           "non-finite",
-          "vertex '" + table.id(t) + "' has a non-finite coordinate (" + format_number(bad) + ")", tags[i]);
+          "vertex '" + table.id(t) + "' has a non-finite coordinate (" + format_for_message(bad) + ")",
+          tags[i]);
     }
     if (skipped()) table.kept.push_back(p);
     table.usable.push_back(finite);

@@ -1,0 +1,39 @@
+// The numeric limits of drawings and devices, shared by core's checks and the runtime's (script settings,
+// command-line options): one number each, so that what one side accepts the other never rejects, and
+// messages print the number from here. The evaluator's runaway limits stay in runtime/limits.hpp.
+#pragma once
+
+namespace hlr {
+
+// ---- Pens
+// Pen numbers run 1…kMaxPen: one byte, far more than any carousel or colour table.
+inline constexpr int kMaxPen = 255;
+// The widest pen line: beyond a centimetre a stroke is no longer a line.
+inline constexpr double kMaxPenWidthMm = 10;
+
+// ---- Paper
+// The largest sheet side (10 m: far beyond any plotter, well inside cairo's coordinate range).
+inline constexpr double kMaxPaperSideMm = 10000;
+
+// ---- HPGL plotters
+// VS velocity in cm/s, the range core/device/hpgl_device.hpp documents. A plotter clamps a VS above its
+// own top speed (38.1 cm/s on the HP 7475A, 80 on the 7550A), so the cap only rejects nonsense.
+inline constexpr double kMinVelocityCmS = 0.01;
+inline constexpr double kMaxVelocityCmS = 1000;
+// Millimetres per plotter unit: real plotters step 0.025 mm (HP, Roland) or 0.01 mm (cutters).
+inline constexpr double kMinPlotterUnitMm = 0.001;
+inline constexpr double kMaxPlotterUnitMm = 1;
+// Coordinate pairs per PD command: small interpreter buffers want few; more than this helps none.
+inline constexpr int kMaxPairsPerPd = 10000;
+// HP-GL integer coordinates are 16-bit.
+inline constexpr long kHpglMinCoordinate = -32768;
+inline constexpr long kHpglMaxCoordinate = 32767;
+// The longest relative step written, kept under kHpglMaxCoordinate with margin for rounding.
+inline constexpr long kHpglMaxStep = 32000;
+
+// ---- Incremental plotter tape (.steps)
+// Step length in mm: a micrometre is below any stepper's resolution, a centimetre no longer draws.
+inline constexpr double kMinPlotterStepMm = 0.001;
+inline constexpr double kMaxPlotterStepMm = 10;
+
+}  // namespace hlr

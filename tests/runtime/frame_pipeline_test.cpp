@@ -1,0 +1,150 @@
+// The frame pipeline through the command: the files' bytes do not depend on --jobs or on sharding, and a
+// failing frame leaves nothing behind, whatever ran beside it.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "tests/runtime/cli_run.hpp"
+
+namespace hlr::runtime {
+namespace {
+
+namespace fs = std::filesystem;
+
+// Enough frames and pieces that several frames are in flight at once with two or more threads.
+const char* kTurntable =
+    "animate frames 12 fps 12\n"
+    "draw torus(3, 1.2, major: 40, minor: 16, crease: 0)\n"
+    "draw box(2, 2, 2) at translate(-1, -1, -1.2) pen 2\n"
+    "let a = 360 * frame / 12\n"
+    "camera turn = lookat(eye: (14 * cos(a), 14 * sin(a), 7), target: (0, 0, 0), fov: 35)\n"
+    "pen 2 (colour: \"red\")\n"
+    "style hidden dashed\n";
+
+class FramePipeline : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() /
+           ("hlr-pipeline-" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+    script_ = dir_ / "turntable.hls";
+    std::ofstream(script_) << kTurntable;
+    // A fixed PDF creation date, so that two runs can give the same bytes.
+    ::setenv("SOURCE_DATE_EPOCH", "1700000000", 1);
+  }
+  void TearDown() override {
+    ::unsetenv("SOURCE_DATE_EPOCH");
+    fs::remove_all(dir_);
+  }
+
+  // Every file of `sub`, by name.
+  std::map<std::string, std::string> files_in(const fs::path& sub) const {
+    std::map<std::string, std::string> out;
+    for (const auto& e : fs::directory_iterator(sub))
+      out[e.path().filename().string()] = test::read_text(e.path());
+    return out;
+  }
+
+  // Renders into a fresh subdirectory `name` with `args`; returns its files.
+  std::map<std::string, std::string> render(const std::string& name, const std::string& pattern,
+                                            std::vector<std::string> args) {
+    const fs::path sub = dir_ / name;
+    fs::create_directories(sub);
+    args.insert(args.begin(), {script_.string(), "-o", (sub / pattern).string()});
+    const test::CliResult r = test::run(args);
+    EXPECT_EQ(r.code, 0) << r.err;
+    return files_in(sub);
+  }
+
+  fs::path dir_, script_;
+};
+
+TEST_F(FramePipeline, BytesDoNotDependOnJobs) {
+  const std::vector<std::string> patterns = {"all.pdf",          "all.json",          "f-{frame:02}.png",
+                                             "f-{frame:02}.svg", "f-{frame:02}.hpgl", "f-{frame:02}.steps"};
+  for (const std::string& pattern : patterns) {
+    const std::string ext = fs::path(pattern).extension().string().substr(1);
+    const auto one = render(ext + "-1", pattern, {"--jobs", "1"});
+    const std::size_t expected_files = pattern.find('{') == std::string::npos ? 1 : 12;
+    ASSERT_EQ(one.size(), expected_files) << pattern;
+    for (const auto& [name, bytes] : one) EXPECT_GT(bytes.size(), 100U) << name;
+    for (const char* jobs : {"2", "3", "8"}) {
+      const auto many = render(ext + "-" + jobs, pattern, {"--jobs", jobs});
+      EXPECT_EQ(many, one) << pattern << " with --jobs " << jobs;
+    }
+  }
+}
+
+TEST_F(FramePipeline, ShardsTogetherWriteWhatOneRunWrites) {
+  const auto whole = render("whole", "f-{frame:02}.hpgl", {"--jobs", "2"});
+  ASSERT_EQ(whole.size(), 12U);
+  std::map<std::string, std::string> joined;
+  for (const char* shard : {"1/3", "2/3", "3/3"}) {
+    const auto part = render("whole-shards", "f-{frame:02}.hpgl", {"--shard", shard, "--jobs", "2"});
+    joined.insert(part.begin(), part.end());
+  }
+  EXPECT_EQ(joined, whole);
+  // A range and its complement, likewise.
+  const auto first = render("ranges", "f-{frame:02}.hpgl", {"--frames", "0-4"});
+  const auto rest = render("ranges", "f-{frame:02}.hpgl", {"--frames", "5-11", "--jobs", "3"});
+  EXPECT_EQ(rest, whole);
+  EXPECT_EQ(first.size(), 5U);
+}
+
+TEST_F(FramePipeline, PdfPagesComeInFrameOrder) {
+  render("pdf", "all.pdf", {"--jobs", "4"});
+  // poppler reads the captions back, page by page: "frame K of 12" must come in frame order.
+  const fs::path text = dir_ / "pdf.txt";
+  const std::string command =
+      "pdftotext -layout '" + (dir_ / "pdf" / "all.pdf").string() + "' '" + text.string() + "'";
+  ASSERT_EQ(std::system(command.c_str()), 0) << "pdftotext (poppler-utils, installed by scripts/setup.sh)";
+  const std::string pages = test::read_text(text);
+  std::size_t last = 0;
+  for (int k = 0; k < 12; ++k) {
+    const std::size_t at = pages.find("frame " + std::to_string(k) + " of 12");
+    ASSERT_NE(at, std::string::npos) << "frame " << k;
+    if (k > 0) {
+      EXPECT_GT(at, last) << "frame " << k;
+    }
+    last = at;
+  }
+}
+
+TEST_F(FramePipeline, AFailingFrameLeavesNothingBehind) {
+  // Frame 9 divides by zero; the frames before it were rendered, planned and encoded beside it.
+  std::ofstream(script_) << kTurntable << "let boom = 1 / (frame - 9)\n";
+  for (const std::string pattern : {"all.pdf", "f-{frame:02}.png", "all.json"}) {
+    for (const char* jobs : {"1", "2", "4"}) {
+      const fs::path sub = dir_ / ("fail-" + fs::path(pattern).extension().string().substr(1) + jobs);
+      fs::create_directories(sub);
+      const test::CliResult r = test::run({script_.string(), "-o", (sub / pattern).string(), "--jobs", jobs});
+      EXPECT_EQ(r.code, 65) << r.err;
+      EXPECT_NE(r.err.find("division by zero (in frame 9)"), std::string::npos) << r.err;
+      EXPECT_TRUE(fs::is_empty(sub)) << pattern << " --jobs " << jobs << ": " << files_in(sub).size()
+                                     << " files left";
+    }
+  }
+}
+
+TEST_F(FramePipeline, TheLowestFailingFrameIsReportedWhateverTheJobs) {
+  // Frames 4 and 7 fail; frame 7 may finish first when frames run side by side.
+  std::ofstream(dir_ / "two.hls") << "animate frames 10\n"
+                                  << "camera c = orbit()\n"
+                                  << "draw cube(1)\n"
+                                  << "let b = 1 / ((frame - 4) * (frame - 7))\n";
+  for (const char* jobs : {"1", "2", "8"}) {
+    const test::CliResult r =
+        test::run({(dir_ / "two.hls").string(), "-o", (dir_ / "two.json").string(), "--jobs", jobs});
+    EXPECT_EQ(r.code, 65);
+    EXPECT_NE(r.err.find("(in frame 4)"), std::string::npos) << jobs << ": " << r.err;
+    EXPECT_FALSE(fs::exists(dir_ / "two.json"));
+  }
+}
+
+}  // namespace
+}  // namespace hlr::runtime
