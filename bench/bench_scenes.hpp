@@ -26,7 +26,7 @@ struct BenchScene {
 
 inline std::size_t count_faces(const Scene& s) {
   std::size_t n = 0;
-  for (const auto& o : s.objects) n += o.solid.faces.size();
+  for (const auto& o : s.objects) n += o.solid->faces.size();
   return n;
 }
 

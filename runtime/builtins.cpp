@@ -6,6 +6,7 @@
 
 #include "runtime/eval_error.hpp"
 #include "runtime/format_value.hpp"
+#include "runtime/solid_cache.hpp"
 
 namespace hlr::runtime {
 
@@ -86,7 +87,10 @@ Value finite_vector(const CallArgs& call, Vector3 v) {
 Value generated_solid(const CallArgs& call, std::size_t faces, const std::function<Solid()>& make) {
   call.budget().charge_faces_built(call.site().span, faces);
   try {
-    return Value::solid(std::make_shared<const Solid>(make()), call.site().function);
+    // Keyed by the built-in's signature, not the name it was called by (a script may rename built-ins).
+    return Value::solid(SolidCache::shared().generated(std::string(call.site().signature), call.args(),
+                                                       [&] { return std::make_shared<const Solid>(make()); }),
+                        call.site().function);
   } catch (const EvalError&) {
     throw;
   } catch (const std::invalid_argument& e) {

@@ -7,6 +7,7 @@
 #include "lang/overloaded.hpp"
 #include "runtime/eval_detail.hpp"
 #include "runtime/placement.hpp"
+#include "runtime/solid_cache.hpp"
 
 namespace hlr::runtime {
 
@@ -165,13 +166,15 @@ void Evaluator::exec_draw(const lang::DrawStmt& draw, const ScopePtr& scope) {
     const int seen = ++drawn_names_[placed.name];
     o.name = seen == 1 ? placed.name : placed.name + "#" + std::to_string(seen);
     if (is_identity(placed.worldFromObject)) {
-      o.solid = *placed.solid;
+      o.solid = placed.solid;
     } else {
       const double det = placed.worldFromObject.determinant();
       if (det == 0 || !std::isfinite(det))
         fail(span, "the transform is singular: it would flatten the solid");
-      o.solid = placed.solid->transformed(placed.worldFromObject);
-      for (const Point3& p : o.solid.vertices)
+      o.solid = SolidCache::shared().placed(placed.solid, placed.worldFromObject, [&] {
+        return std::make_shared<const Solid>(placed.solid->transformed(placed.worldFromObject));
+      });
+      for (const Point3& p : o.solid->vertices)
         if (!is_finite(p))
           fail(span, "the transform moves a vertex beyond the largest number (about 1.8e308)");
     }

@@ -57,7 +57,7 @@ void run_frame(const Program& program, int frame, double fps, const PipelineOpti
   r.path = settings.target.path;
   for (const SceneObject& o : scene.scene.objects) {
     r.object_names.push_back(o.name);
-    r.faces += o.solid.faces.size();
+    r.faces += o.solid->faces.size();
   }
   job.target = settings.target;
   if (!options.render) return;

@@ -17,7 +17,7 @@ bool is_perspective(const Camera& camera) { return camera.projection == Projecti
 Tolerance frame_tolerance(const Scene& scene, const Camera& camera) {
   double view = 0, world = 0;
   for (const SceneObject& object : scene.objects)
-    for (Point3 p : object.solid.vertices) {
+    for (Point3 p : object.solid->vertices) {
       const Point3 v = camera.view(p);
       view = std::max({view, std::abs(v.x), std::abs(v.y), std::abs(v.z)});
       world = std::max({world, std::abs(p.x), std::abs(p.y), std::abs(p.z)});
@@ -289,7 +289,7 @@ FrameSetup prepare_frame(const Scene& scene, const Camera& camera, bool intersec
     {
       FrameSetup& part = parts[k];
       for (std::size_t o = k * chunk; o < std::min(n, (k + 1) * chunk); ++o) {
-        const Solid& solid = scene.objects[o].solid;
+        const Solid& solid = *scene.objects[o].solid;
         view_vertices.resize(solid.vertices.size());
         for (std::size_t i = 0; i < solid.vertices.size(); ++i) view_vertices[i] = camera.view(solid.vertices[i]);
         face_facing(solid, view, ltol, facing[o]);

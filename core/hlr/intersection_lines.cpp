@@ -94,7 +94,7 @@ void add_intersection_candidates(const Scene& scene, const Camera& camera,
   const std::size_t n = scene.objects.size();
   std::vector<Box3> boxes(n);
   for (std::size_t o = 0; o < n; ++o)
-    for (Point3 p : scene.objects[o].solid.vertices) boxes[o].include(p);
+    for (Point3 p : scene.objects[o].solid->vertices) boxes[o].include(p);
 
   struct FaceRef {
     FaceIndex face;
@@ -105,7 +105,7 @@ void add_intersection_candidates(const Scene& scene, const Camera& camera,
   auto culled_face = [&](std::size_t o, FaceIndex f) { return cull[o] && facing[o][f] <= 0; };
   auto faces_of = [&](std::size_t o, const Box3& clip) {
     std::vector<FaceRef> refs;
-    const Solid& s = scene.objects[o].solid;
+    const Solid& s = *scene.objects[o].solid;
     for (std::size_t f = 0; f < s.faces.size(); ++f) {
       const Box3 b = face_box(s, s.faces[f]);
       if (b.overlaps(clip, tol)) refs.push_back({static_cast<FaceIndex>(f), b});
@@ -131,8 +131,8 @@ void add_intersection_candidates(const Scene& scene, const Camera& camera,
   std::sort(pairs.begin(), pairs.end());
   for (const auto& [i, j] : pairs) {
     {
-      const Solid& si = scene.objects[i].solid;
-      const Solid& sj = scene.objects[j].solid;
+      const Solid& si = *scene.objects[i].solid;
+      const Solid& sj = *scene.objects[j].solid;
       const std::vector<FaceRef> fa = faces_of(i, boxes[j]), fb = faces_of(j, boxes[i]);
       // Sweep over x: each face of i meets the faces of j whose x-range overlaps.
       std::size_t start = 0;

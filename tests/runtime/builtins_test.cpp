@@ -120,7 +120,7 @@ TEST(BuiltinsSolids, EachGeneratorMakesItsSolid) {
   for (const Row& r : rows) {
     const FrameScene scene = test::run_ok(std::string("draw ") + r.call);
     ASSERT_EQ(scene.scene.objects.size(), 1U) << r.call;
-    EXPECT_EQ(scene.scene.objects[0].solid.faces.size(), r.faces) << r.call;
+    EXPECT_EQ(scene.scene.objects[0].solid->faces.size(), r.faces) << r.call;
     EXPECT_EQ(scene.scene.objects[0].name, std::string(r.call).substr(0, std::string(r.call).find('(')))
         << r.call;
   }
@@ -130,11 +130,11 @@ TEST(BuiltinsSolids, SameGeometryAsTheStdlib) {
   const FrameScene scene = test::run_ok("draw box(size: (2, 4, 6), center: (1, 1, 1))");
   ASSERT_EQ(scene.scene.objects.size(), 1U);
   const Solid expected = stdlib::box({0, -1, -2}, {2, 3, 4});
-  EXPECT_EQ(scene.scene.objects[0].solid.vertices, expected.vertices);
+  EXPECT_EQ(scene.scene.objects[0].solid->vertices, expected.vertices);
   const FrameScene cyl = test::run_ok("draw cylinder(1, 2)");
   const Solid expected_cyl = stdlib::cylinder({0, 0, 0}, 1, 2, 32, 30);
-  EXPECT_EQ(cyl.scene.objects[0].solid.vertices, expected_cyl.vertices);
-  EXPECT_EQ(cyl.scene.objects[0].solid.edges.size(), expected_cyl.edges.size());
+  EXPECT_EQ(cyl.scene.objects[0].solid->vertices, expected_cyl.vertices);
+  EXPECT_EQ(cyl.scene.objects[0].solid->edges.size(), expected_cyl.edges.size());
 }
 
 TEST(BuiltinsSolids, GroupsAndPlacement) {
@@ -146,7 +146,7 @@ TEST(BuiltinsSolids, GroupsAndPlacement) {
   EXPECT_EQ(scene.scene.objects[0].name, "cube");
   EXPECT_EQ(scene.scene.objects[1].name, "cube#2");
   EXPECT_EQ(scene.scene.objects[3].name, "cube#4");
-  EXPECT_EQ(scene.scene.objects[1].solid.vertices[0], (Point3{2.5, 9.5, -0.5}));
+  EXPECT_EQ(scene.scene.objects[1].solid->vertices[0], (Point3{2.5, 9.5, -0.5}));
 }
 
 TEST(BuiltinsSolids, BadShapesAreErrorsAtTheCall) {

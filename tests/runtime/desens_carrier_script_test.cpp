@@ -77,7 +77,7 @@ TEST(DesensCarrierScript, ExampleViewsMatchTheThesisAndTheEngine) {
     }
     ASSERT_EQ(scene.scene.objects.size(), 1U);
     ASSERT_EQ(scene.cameras.size(), 1U);
-    const Solid& solid = scene.scene.objects[0].solid;
+    const Solid& solid = *scene.scene.objects[0].solid;
     EXPECT_EQ(solid.vertices.size(), 62U);
     EXPECT_EQ(solid.faces.size(), 32U);
     // The legacy data, accepted with a warning each: warped faces 13–16, face 17's crossing hole.

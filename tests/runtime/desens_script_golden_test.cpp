@@ -56,7 +56,7 @@ TEST(DesensScriptGolden, LBlockViewsMatchTheEngine) {
     const FrameScene scene = test::run_ok(lblock_script(view));
     ASSERT_EQ(scene.scene.objects.size(), 1U);
     ASSERT_EQ(scene.cameras.size(), 1U);
-    const Solid& solid = scene.scene.objects[0].solid;
+    const Solid& solid = *scene.scene.objects[0].solid;
     EXPECT_EQ(solid.faces.size(), 8U);
     EXPECT_EQ(solid.edges.size(), 18U);  // the thesis's 18 LINES
     const FrameResult ours = render_frame(scene.scene, scene.cameras[0].camera);

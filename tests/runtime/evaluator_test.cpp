@@ -84,7 +84,7 @@ TEST(Evaluator, ForWalksRangesAndLists) {
   EXPECT_EQ(value("count_to(5)", sum), "4");
   const FrameScene scene = test::run_ok("for p in [(0, 0, 0), (5, 0, 0)] { draw cube(1) at translate(p) }");
   ASSERT_EQ(scene.scene.objects.size(), 2U);
-  EXPECT_EQ(scene.scene.objects[1].solid.vertices[0].x, 4.5);
+  EXPECT_EQ(scene.scene.objects[1].solid->vertices[0].x, 4.5);
 }
 
 TEST(Evaluator, FunctionsAreValues) {

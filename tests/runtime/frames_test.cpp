@@ -32,7 +32,7 @@ TEST(Frames, AnimateBindsFrameTAndTime) {
   EXPECT_EQ(scene.animation->frames, 5);
   EXPECT_EQ(scene.animation->fps, 10);
   ASSERT_EQ(scene.scene.objects.size(), 2U);
-  EXPECT_EQ(scene.scene.objects[0].solid.vertices[0], (Point3{4, -1, -1}));  // t = 0.5 → x + 5
+  EXPECT_EQ(scene.scene.objects[0].solid->vertices[0], (Point3{4, -1, -1}));  // t = 0.5 → x + 5
 }
 
 TEST(Frames, SettingsStatements) {

@@ -24,7 +24,7 @@ TEST(Import, ReadsAMeshRelativeToTheScript) {
   ASSERT_TRUE(program->parsed());
   const FrameScene scene = program->evaluate({});
   ASSERT_EQ(scene.scene.objects.size(), 1U);
-  const Solid& cube = scene.scene.objects[0].solid;
+  const Solid& cube = *scene.scene.objects[0].solid;
   EXPECT_EQ(cube.vertices.size(), 8U);
   EXPECT_EQ(cube.faces.size(), 6U);
   EXPECT_EQ(cube.edges.size(), 12U);

@@ -32,7 +32,7 @@ std::string ridge(const std::string& options) {
 
 std::size_t count_kind(const FrameScene& scene, EdgeKind kind) {
   if (scene.scene.objects.empty()) return 0;
-  const auto& edges = scene.scene.objects[0].solid.edges;
+  const auto& edges = scene.scene.objects[0].solid->edges;
   return static_cast<std::size_t>(
       std::count_if(edges.begin(), edges.end(), [&](const SolidEdge& e) { return e.kind == kind; }));
 }
@@ -44,12 +44,12 @@ TEST(SolidOptions, CreaseMakesShallowEdgesSmooth) {
 
   const FrameScene smooth = test::run_ok(ridge("(crease: 10)"));
   ASSERT_EQ(smooth.scene.objects.size(), 1U);
-  EXPECT_EQ(smooth.scene.objects[0].solid.crease_angle_deg, 10.0);
+  EXPECT_EQ(smooth.scene.objects[0].solid->crease_angle_deg, 10.0);
   ASSERT_EQ(count_kind(smooth, EdgeKind::Smooth), 1U);  // the ridge 9–10, and nothing else
-  for (const SolidEdge& e : smooth.scene.objects[0].solid.edges) {
+  for (const SolidEdge& e : smooth.scene.objects[0].solid->edges) {
     if (e.kind != EdgeKind::Smooth) continue;
-    const Point3 a = smooth.scene.objects[0].solid.vertices[e.v0];
-    const Point3 b = smooth.scene.objects[0].solid.vertices[e.v1];
+    const Point3 a = smooth.scene.objects[0].solid->vertices[e.v0];
+    const Point3 b = smooth.scene.objects[0].solid->vertices[e.v1];
     EXPECT_EQ(a.z, 1.05);
     EXPECT_EQ(b.z, 1.05);
   }
@@ -81,7 +81,7 @@ TEST(SolidOptions, PlanarityLetsASlightlyWarpedFaceThrough) {
 
   const FrameScene relaxed = test::run_ok(warped("(planarity: 0.003)"));
   ASSERT_EQ(relaxed.scene.objects.size(), 1U);
-  EXPECT_EQ(relaxed.scene.objects[0].solid.faces.size(), 1U);
+  EXPECT_EQ(relaxed.scene.objects[0].solid->faces.size(), 1U);
   ASSERT_EQ(relaxed.warnings.size(), 1U);
   EXPECT_EQ(relaxed.warnings[0].severity, lang::Severity::Warning);
   const std::string warning = test::line_col(relaxed.warnings[0]);
@@ -115,7 +115,7 @@ TEST(SolidOptions, CrossingHolesAcceptsAHoleOutsideItsFace) {
 
   const FrameScene kept = test::run_ok(crossing("(crossing_holes: true)"));
   ASSERT_EQ(kept.scene.objects.size(), 1U);
-  EXPECT_EQ(kept.scene.objects[0].solid.faces[0].rings.size(), 2U);
+  EXPECT_EQ(kept.scene.objects[0].solid->faces[0].rings.size(), 2U);
   ASSERT_EQ(kept.warnings.size(), 1U);
   const std::string warning = test::line_col(kept.warnings[0]);
   EXPECT_EQ(warning.substr(0, 37), "10:3: solid 'plate': hole 1 of face 1") << warning;

@@ -26,9 +26,9 @@ TEST(SolidStatement, DeclaresWithoutDrawing) {
   ASSERT_EQ(drawn.scene.objects.size(), 2U);
   EXPECT_EQ(drawn.scene.objects[0].name, "tet");
   EXPECT_EQ(drawn.scene.objects[1].name, "tet#2");
-  EXPECT_EQ(drawn.scene.objects[0].solid.faces.size(), 4U);
-  EXPECT_TRUE(drawn.scene.objects[0].solid.closed);
-  EXPECT_EQ(drawn.scene.objects[1].solid.vertices[1], (Point3{6, 0, 0}));
+  EXPECT_EQ(drawn.scene.objects[0].solid->faces.size(), 4U);
+  EXPECT_TRUE(drawn.scene.objects[0].solid->closed);
+  EXPECT_EQ(drawn.scene.objects[1].solid->vertices[1], (Point3{6, 0, 0}));
 }
 
 TEST(SolidStatement, PositionsAreExpressionsAndIdsAreNumbersOrNames) {
@@ -42,7 +42,7 @@ TEST(SolidStatement, PositionsAreExpressionsAndIdsAreNumbersOrNames) {
       "}\n"
       "draw wedge");
   ASSERT_EQ(scene.scene.objects.size(), 1U);
-  EXPECT_EQ(scene.scene.objects[0].solid.vertices[3], (Point3{0, 0, 2}));
+  EXPECT_EQ(scene.scene.objects[0].solid->vertices[3], (Point3{0, 0, 2}));
 }
 
 TEST(SolidStatement, FacesWithHoles) {
@@ -60,9 +60,9 @@ TEST(SolidStatement, FacesWithHoles) {
       "}\n"
       "draw plate");
   ASSERT_EQ(scene.scene.objects.size(), 1U);
-  EXPECT_EQ(scene.scene.objects[0].solid.faces.size(), 10U);
-  EXPECT_EQ(scene.scene.objects[0].solid.faces[0].rings.size(), 2U);
-  EXPECT_TRUE(scene.scene.objects[0].solid.closed);
+  EXPECT_EQ(scene.scene.objects[0].solid->faces.size(), 10U);
+  EXPECT_EQ(scene.scene.objects[0].solid->faces[0].rings.size(), 2U);
+  EXPECT_TRUE(scene.scene.objects[0].solid->closed);
 }
 
 TEST(SolidStatement, BuilderErrorsPointAtTheirItems) {
@@ -116,8 +116,8 @@ TEST(SolidStatement, ThesisStyleLoopsWithBridges) {
       "}\n"
       "draw plate");
   ASSERT_EQ(scene.scene.objects.size(), 1U);
-  ASSERT_EQ(scene.scene.objects[0].solid.faces.size(), 1U);
-  EXPECT_EQ(scene.scene.objects[0].solid.faces[0].rings.size(), 2U);
+  ASSERT_EQ(scene.scene.objects[0].solid->faces.size(), 1U);
+  EXPECT_EQ(scene.scene.objects[0].solid->faces[0].rings.size(), 2U);
 }
 
 }  // namespace

@@ -18,16 +18,16 @@ TEST(StdlibModules, GearsFastenersAndBuildingsBuild) {
       "camera c = orbit()\n");
   ASSERT_EQ(scene.scene.objects.size(), 6U);  // two gears, the nut, the bolt (head and shank), the house
   // A gear of n teeth without a bore: top, bottom and one side face per outline edge (4 per tooth).
-  const Solid& plain = scene.scene.objects[1].solid;
+  const Solid& plain = *scene.scene.objects[1].solid;
   EXPECT_EQ(plain.faces.size(), 12U * 4U + 2U);
   EXPECT_TRUE(plain.closed);
   // With a key-wayed bore: 80 outline sides, 3 key-way corners + 22 arc points in the hole.
-  const Solid& bored = scene.scene.objects[0].solid;
+  const Solid& bored = *scene.scene.objects[0].solid;
   EXPECT_EQ(bored.faces.size(), 20U * 4U + 25U + 2U);
   // The nut: hexagon outside, 12-gon bore.
-  EXPECT_EQ(scene.scene.objects[2].solid.faces.size(), 6U + 12U + 2U);
+  EXPECT_EQ(scene.scene.objects[2].solid->faces.size(), 6U + 12U + 2U);
   // The house: a pentagonal gable prism.
-  EXPECT_EQ(scene.scene.objects[5].solid.faces.size(), 5U + 2U);
+  EXPECT_EQ(scene.scene.objects[5].solid->faces.size(), 5U + 2U);
 }
 
 TEST(StdlibModules, MissingModuleSaysWhereModulesLive) {

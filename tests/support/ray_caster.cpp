@@ -58,7 +58,7 @@ RayCaster::RayCaster(const Scene& scene, const Camera& camera, double relative_t
     hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
   };
   for (const auto& o : scene.objects)
-    for (const Point3& p : o.solid.vertices) grow(p);
+    for (const Point3& p : o.solid->vertices) grow(p);
   if (camera.projection == Projection::Perspective) grow(camera.eye_world());
   if (lo.x > hi.x) lo = hi = Point3{};
   extent_ = std::max(distance(lo, hi), 1e-12);
@@ -67,7 +67,7 @@ RayCaster::RayCaster(const Scene& scene, const Camera& camera, double relative_t
   on_plane_ = 1e-10 * extent_;
 
   for (std::uint32_t oi = 0; oi < scene.objects.size(); ++oi) {
-    const Solid& s = scene.objects[oi].solid;
+    const Solid& s = *scene.objects[oi].solid;
     first_face_.push_back(faces_.size());
     for (std::uint32_t fi = 0; fi < s.faces.size(); ++fi) {
       const Face& face = s.faces[fi];

@@ -74,8 +74,8 @@ std::string segment_text(const Scene& scene, const VisibleSegment& s) {
   const std::string name = s.object < scene.objects.size() ? scene.objects[s.object].name : "?";
   if (s.source == SegmentSource::Edge) {
     m << "edge piece of object " << s.object << " '" << name << "' edge " << s.edge;
-    if (s.object < scene.objects.size() && s.edge < scene.objects[s.object].solid.edges.size())
-      m << " (" << kind_name(scene.objects[s.object].solid.edges[s.edge].kind) << ")";
+    if (s.object < scene.objects.size() && s.edge < scene.objects[s.object].solid->edges.size())
+      m << " (" << kind_name(scene.objects[s.object].solid->edges[s.edge].kind) << ")";
   } else {
     m << "intersection piece of objects " << s.object << " and " << s.other;
   }
@@ -86,7 +86,7 @@ std::string segment_text(const Scene& scene, const VisibleSegment& s) {
 // Is p on some face of `object` (within tol of its plane and inside or within tol of its polygon)?
 bool on_surface(const Scene& scene, const RayCaster& oracle, std::uint32_t object, Point3 p) {
   const double tol = oracle.tolerance();
-  for (std::uint32_t f = 0; f < scene.objects[object].solid.faces.size(); ++f) {
+  for (std::uint32_t f = 0; f < scene.objects[object].solid->faces.size(); ++f) {
     if (std::abs(oracle.signed_distance(object, f, p)) > tol) continue;
     const auto prox = oracle.proximity(object, f, p);
     if (prox.inside || prox.boundary_distance <= tol) return true;
@@ -178,7 +178,7 @@ double picture_extent(const Scene& scene, const Camera& camera, const FrameResul
   };
   for (const auto& s : result.segments) grow(s.p0), grow(s.p1);
   for (const auto& o : scene.objects)
-    for (const Point3& p : o.solid.vertices) grow(p);
+    for (const Point3& p : o.solid->vertices) grow(p);
   const double extent = x0 <= x1 ? std::hypot(x1 - x0, y1 - y0) : 0.0;
   // At least the 90° field itself (focal·[−1, 1]² for perspective).
   return std::max(extent, camera.projection == Projection::Perspective ? 2 * std::abs(camera.focal) : 1e-12);
@@ -201,7 +201,7 @@ CheckReport check_drawn_not_hidden(const Scene& scene, const RayCaster& oracle, 
       continue;
     }
     if (s.source == SegmentSource::Edge) {
-      const Solid& solid = scene.objects[s.object].solid;
+      const Solid& solid = *scene.objects[s.object].solid;
       if (s.edge >= solid.edges.size()) {
         fail(r, options, where.str() + ": edge index out of range");
         continue;
@@ -243,8 +243,8 @@ CheckReport check_drawn_not_hidden(const Scene& scene, const RayCaster& oracle, 
   // Pieces of one edge must not overlap (each shared edge is emitted once).
   for (const auto& [k, idx] : pieces_by_edge(result)) {
     const auto o = static_cast<std::uint32_t>(k >> 32), e = static_cast<std::uint32_t>(k & 0xffffffffu);
-    if (o >= scene.objects.size() || e >= scene.objects[o].solid.edges.size() || idx.size() < 2) continue;
-    const Solid& solid = scene.objects[o].solid;
+    if (o >= scene.objects.size() || e >= scene.objects[o].solid->edges.size() || idx.size() < 2) continue;
+    const Solid& solid = *scene.objects[o].solid;
     const Point3 v0 = solid.vertices[solid.edges[e].v0], v1 = solid.vertices[solid.edges[e].v1];
     const Vector3 ev = v1 - v0;
     const double len2 = dot(ev, ev);
@@ -273,7 +273,7 @@ CheckReport check_visible_not_missing(const Scene& scene, const RayCaster& oracl
   const double eps = options.picture_relative * picture_extent(scene, cam, result);
   const auto pieces = pieces_by_edge(result);
   for (std::uint32_t o = 0; o < scene.objects.size(); ++o) {
-    const Solid& solid = scene.objects[o].solid;
+    const Solid& solid = *scene.objects[o].solid;
     for (std::uint32_t e = 0; e < solid.edges.size(); ++e) {
       const SolidEdge& edge = solid.edges[e];
       if (drawn_candidate(oracle, o, solid, edge) != Candidate::Yes) continue;
@@ -345,8 +345,8 @@ CheckReport check_intersections(const Scene& scene, const RayCaster& oracle, con
   // (c2) visible crossings of faces of two closed solids are drawn.
   for (std::uint32_t a = 0; a < n_objects; ++a)
     for (std::uint32_t b = a + 1; b < n_objects; ++b) {
-      const Solid& sa = scene.objects[a].solid;
-      const Solid& sb = scene.objects[b].solid;
+      const Solid& sa = *scene.objects[a].solid;
+      const Solid& sb = *scene.objects[b].solid;
       if (!sa.closed || !sb.closed) continue;
       std::vector<std::size_t> pair_pieces;
       for (std::size_t i = 0; i < result.segments.size(); ++i) {

@@ -501,7 +501,7 @@ std::map<std::pair<std::uint32_t, std::uint32_t>, std::vector<Piece>> pieces_by_
   std::map<std::pair<std::uint32_t, std::uint32_t>, std::vector<Piece>> out;
   for (const VisibleSegment& s : r.segments) {
     if (s.source != SegmentSource::Edge) continue;
-    const Solid& solid = scene.objects[s.object].solid;
+    const Solid& solid = *scene.objects[s.object].solid;
     const SolidEdge& e = solid.edges[s.edge];
     const Point3 a = solid.vertices[e.v0], b = solid.vertices[e.v1];
     const Vector3 d = b - a;
@@ -546,7 +546,7 @@ TEST(EngineCasesHidden, HiddenPiecesComplementTheVisibleOnes) {
     const auto pieces = pieces_by_edge(scene, all);
     double hidden_total = 0;
     for (std::uint32_t o = 0; o < scene.objects.size(); ++o) {
-      const Solid& solid = scene.objects[o].solid;
+      const Solid& solid = *scene.objects[o].solid;
       for (std::uint32_t e = 0; e < solid.edges.size(); ++e) {
         if (solid.edges[e].kind == EdgeKind::Flat) continue;
         const std::string label = c.name + " object " + std::to_string(o) + " edge " + std::to_string(e);

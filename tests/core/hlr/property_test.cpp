@@ -323,7 +323,7 @@ Case make_case(unsigned seed) {
     // With a frame, half the time zoom in on a vertex so that the frame clips the scene.
     const bool zoom = aspect > 0 && r.integer(0, 1) == 1;
     if (zoom) {
-      const Solid& s = c.scene.objects[static_cast<std::size_t>(r.integer(0, static_cast<int>(c.scene.objects.size()) - 1))].solid;
+      const Solid& s = *c.scene.objects[static_cast<std::size_t>(r.integer(0, static_cast<int>(c.scene.objects.size()) - 1))].solid;
       c.target = s.vertices[static_cast<std::size_t>(r.integer(0, static_cast<int>(s.vertices.size()) - 1))];
       c.zoomed = true;
     }
@@ -337,7 +337,7 @@ Case make_case(unsigned seed) {
   }
   d << ", " << (ortho ? "ortho" : "lookat") << " eye " << str(c.eye) << " target " << str(c.target) << " aspect "
     << aspect;
-  for (const auto& o : c.scene.objects) d << "\n  " << o.name << ": " << o.solid.faces.size() << " faces";
+  for (const auto& o : c.scene.objects) d << "\n  " << o.name << ": " << o.solid->faces.size() << " faces";
   c.description = d.str();
   return c;
 }

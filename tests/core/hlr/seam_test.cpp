@@ -36,7 +36,7 @@ Scene wall_over_line() {
 TEST(SeamOcclusion, LineUnderATriangulatedWallsDiagonalIsHiddenWhereTheWallIs) {
   const Scene scene = wall_over_line();
   int flat = 0;
-  for (const SolidEdge& e : scene.objects[0].solid.edges) flat += e.kind == EdgeKind::Flat;
+  for (const SolidEdge& e : scene.objects[0].solid->edges) flat += e.kind == EdgeKind::Flat;
   ASSERT_EQ(flat, 1);
   // Straight down: the line's picture is the diagonal's. Perspective from above the wall's centre too.
   const Camera cameras[] = {ortho_camera({{0.5, 0.5, 10}, {0.5, 0.5, 0}, {0, 1, 0}, 4, 0}),
