@@ -4,7 +4,7 @@
 set -euo pipefail
 packages=(
   build-essential cmake ninja-build pkg-config
-  libcairo2-dev nlohmann-json3-dev tao-pegtl-dev libboost-program-options-dev libtbb-dev
+  libcairo2-dev nlohmann-json3-dev tao-pegtl-dev libboost-program-options-dev libtbb-dev zlib1g-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   poppler-utils hp2xx librsvg2-bin
 )

@@ -1,6 +1,5 @@
 #include "core/device/cairo_device.hpp"
 
-#include <cairo-pdf.h>
 #include <cairo-svg.h>
 #include <cairo.h>
 
@@ -8,7 +7,6 @@
 #include <cmath>
 #include <fstream>
 #include <map>
-#include <memory>
 #include <span>
 #include <stdexcept>
 #include <string>
@@ -17,20 +15,12 @@
 #include "core/device/atomic_file.hpp"
 #include "core/device/page_layout.hpp"
 #include "core/format_number.hpp"
+#include "core/device/page_style.hpp"
+#include "core/device/pdf_writer.hpp"
 #include "core/geometry/clip2d.hpp"
 
 namespace hlr {
 namespace {
-
-constexpr double kMmPerInch = 25.4;
-constexpr double kPointsPerMm = 72.0 / kMmPerInch;
-constexpr double kDashMm = 2, kGapMm = 1.2;
-constexpr double kBorderGrey = 0.5;
-constexpr double kCaptionPt = 10;
-// Strokes are clipped to the page grown by this much (plus the widest pen), so that caps at the edge
-// are drawn whole and cairo never sees coordinates beyond its fixed-point range.
-constexpr double kClipPadMm = 10;
-
 
 const char* format_name(CairoFormat f) {
   switch (f) {
@@ -83,40 +73,12 @@ void validate(const std::vector<PlotPage>& pages, const CairoOptions& o) {
     validate_page(pages[i], o, pages.size() > 1 ? "page " + std::to_string(i + 1) + ": " : "");
 }
 
-// Clips the segment a→b to `box` (core/geometry/clip2d.hpp), false when nothing of it is inside.
-bool clip_segment(Point2& a, Point2& b, const Rect2& box) {
-  const auto range = clip_segment_to_rect(a, b, box);
-  if (!range) return false;
-  const Point2 a0 = a;
-  const double dx = b.x - a.x, dy = b.y - a.y;
-  if (range->first > 0) a = {a0.x + range->first * dx, a0.y + range->first * dy};
-  if (range->second < 1) b = {a0.x + range->second * dx, a0.y + range->second * dy};
-  return true;
-}
-
 // Adds one stroke to the current path, clipped to `box`; a stroke leaving and re-entering the box
 // becomes several subpaths.
 void add_stroke(cairo_t* cr, const PlotStroke& stroke, const Rect2& box) {
-  const std::vector<Point2>& pts = stroke.points;
-  if (pts.empty()) return;
-  if (pts.size() == 1) {  // a dot: round caps draw a zero-length line as one
-    if (!box.contains(pts[0])) return;
-    cairo_move_to(cr, pts[0].x, pts[0].y);
-    cairo_line_to(cr, pts[0].x, pts[0].y);
-    return;
-  }
-  bool drawing = false;  // the path's current point is the end of the previous (clipped) piece
-  for (std::size_t i = 1; i < pts.size(); ++i) {
-    Point2 a = pts[i - 1], b = pts[i];
-    if (!clip_segment(a, b, box)) {
-      drawing = false;
-      continue;
-    }
-    const bool entered = a.x != pts[i - 1].x || a.y != pts[i - 1].y;
-    if (!drawing || entered) cairo_move_to(cr, a.x, a.y);
-    cairo_line_to(cr, b.x, b.y);
-    drawing = b.x == pts[i].x && b.y == pts[i].y;
-  }
+  clip_polyline_to_rect(
+      stroke.points, box, [&](Point2 p) { cairo_move_to(cr, p.x, p.y); },
+      [&](Point2 p) { cairo_line_to(cr, p.x, p.y); });
 }
 
 // The caption as valid UTF-8 (cairo fails the whole surface on a bad string): bad bytes become '?'.
@@ -160,10 +122,7 @@ void draw_page(cairo_t* cr, const PlotPage& page, const CairoOptions& o, double 
     cairo_stroke(cr);
   }
 
-  double widest = 0;
-  for (const PlotStroke& s : page.strokes) widest = std::max(widest, o.pens.style(s.pen).width_mm);
-  const double pad = kClipPadMm + widest;
-  const Rect2 box{-pad, -pad, page.width_mm + pad, page.height_mm + pad};
+  const Rect2 box = stroke_clip_box(page, o.pens);
 
   // Consecutive strokes of one pen and layer share a path: the same picture (dashes restart on every
   // subpath), smaller files.
@@ -175,8 +134,7 @@ void draw_page(cairo_t* cr, const PlotPage& page, const CairoOptions& o, double 
     cairo_set_source_rgb(cr, style.r, style.g, style.b);
     cairo_set_line_width(cr, style.width_mm);
     if (layer == StrokeLayer::Hidden) {
-      // Round caps lengthen each dash by the width: shorten the dashes and widen the gaps to match.
-      const double dash[] = {std::max(0.0, kDashMm - style.width_mm), kGapMm + style.width_mm};
+      const double dash[] = {dash_on_mm(style.width_mm), dash_off_mm(style.width_mm)};
       cairo_set_dash(cr, dash, 2, 0);
     } else {
       cairo_set_dash(cr, nullptr, 0, 0);
@@ -315,8 +273,10 @@ PixelSize png_pixel_size(const PlotPage& page, double dpi) {
 
 void check_cairo_page(const PlotPage& page, const CairoOptions& o) { validate_page(page, o, ""); }
 
+PdfOptions pdf_options(const CairoOptions& o) { return {o.pens, o.title, o.creation_date, o.decorations}; }
+
 std::string cairo_page_bytes(const PlotPage& page, const CairoOptions& o) {
-  if (o.format == CairoFormat::Pdf) throw DeviceError("cairo_page_bytes: PDF is written by CairoPdfWriter");
+  if (o.format == CairoFormat::Pdf) throw DeviceError("cairo_page_bytes: PDF pages are made by make_pdf_page");
   validate_page(page, o, "");
   try {
     return o.format == CairoFormat::Svg ? svg_bytes(page, o) : png_bytes(page, o);
@@ -325,70 +285,19 @@ std::string cairo_page_bytes(const PlotPage& page, const CairoOptions& o) {
   }
 }
 
-struct CairoPdfWriter::State {
-  CairoOptions options;
-  SurfaceRef surface{nullptr};
-  ContextRef cr{nullptr};
-};
-
-CairoPdfWriter::CairoPdfWriter(const std::filesystem::path& path, const CairoOptions& o)
-    : s_(std::make_unique<State>()) {
-  s_->options = o;
-  s_->options.format = CairoFormat::Pdf;
-  // The size is set again before every page is drawn.
-  s_->surface.p = cairo_pdf_surface_create(path.c_str(), 297 * kPointsPerMm, 210 * kPointsPerMm);
-  try {
-    check(cairo_surface_status(s_->surface.p));
-  } catch (const std::runtime_error& e) {
-    throw DeviceError(e.what());
-  }
-  if (!o.title.empty()) cairo_pdf_surface_set_metadata(s_->surface.p, CAIRO_PDF_METADATA_TITLE, o.title.c_str());
-  cairo_pdf_surface_set_metadata(s_->surface.p, CAIRO_PDF_METADATA_CREATOR, "hlrscript");
-  if (!o.creation_date.empty())
-    cairo_pdf_surface_set_metadata(s_->surface.p, CAIRO_PDF_METADATA_CREATE_DATE, o.creation_date.c_str());
-  s_->cr.p = cairo_create(s_->surface.p);
-}
-
-CairoPdfWriter::~CairoPdfWriter() = default;
-
-void CairoPdfWriter::add_page(const PlotPage& page) {
-  validate_page(page, s_->options, "");
-  cairo_pdf_surface_set_size(s_->surface.p, page.width_mm * kPointsPerMm, page.height_mm * kPointsPerMm);
-  draw_page(s_->cr.p, page, s_->options, kPointsPerMm);
-  cairo_show_page(s_->cr.p);
-  try {
-    check(cairo_status(s_->cr.p));
-  } catch (const std::runtime_error& e) {
-    throw DeviceError(e.what());
-  }
-}
-
-void CairoPdfWriter::finish() {
-  cairo_destroy(s_->cr.p);
-  s_->cr.p = nullptr;
-  cairo_surface_finish(s_->surface.p);  // writes the file's tail; errors surface here
-  try {
-    check(cairo_surface_status(s_->surface.p));
-  } catch (const std::runtime_error& e) {
-    throw DeviceError(e.what());
-  }
-}
-
 void write_cairo(const std::filesystem::path& target, const std::vector<PlotPage>& pages,
                  const CairoOptions& o) {
+  if (o.format == CairoFormat::Pdf) {
+    write_pdf(target, pages, pdf_options(o));
+    return;
+  }
   try {
     validate(pages, o);
   } catch (const DeviceError& e) {
     throw DeviceError("cannot write '" + target.string() + "': " + e.what());
   }
   write_atomically(target, [&](const std::filesystem::path& temp) {
-    if (o.format == CairoFormat::Pdf) {
-      CairoPdfWriter pdf(temp, o);
-      for (const PlotPage& page : pages) pdf.add_page(page);
-      pdf.finish();
-    } else {
-      write_bytes(temp, o.format == CairoFormat::Svg ? svg_bytes(pages[0], o) : png_bytes(pages[0], o));
-    }
+    write_bytes(temp, o.format == CairoFormat::Svg ? svg_bytes(pages[0], o) : png_bytes(pages[0], o));
   });
 }
 

@@ -1,5 +1,6 @@
-// PDF, SVG and PNG through cairo, drawing PlotPages (core/device/plot_page.hpp): every stroke where the
-// page says, in its pen's colour and width (core/device/pen_style.hpp), in the order given.
+// SVG and PNG through cairo, and PDF through core/device/pdf_writer.hpp, drawing PlotPages
+// (core/device/plot_page.hpp): every stroke where the page says, in its pen's colour and width
+// (core/device/pen_style.hpp), in the order given, as core/device/page_style.hpp says a page looks.
 //
 // PDF holds one page per PlotPage, each its own size, with the title and creator "hlrscript" as
 // metadata. SVG and PNG hold exactly one page; the runtime writes one file per frame for them (an output
@@ -19,11 +20,11 @@
 
 #include <cstddef>
 #include <filesystem>
-#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "core/device/pdf_writer.hpp"
 #include "core/device/pen_style.hpp"
 #include "core/device/plot_page.hpp"
 
@@ -63,20 +64,7 @@ void check_cairo_page(const PlotPage& page, const CairoOptions& options);
 // One page as the bytes of an SVG or PNG file (options.format). Throws DeviceError as write_cairo does.
 std::string cairo_page_bytes(const PlotPage& page, const CairoOptions& options);
 
-// A PDF written page by page at `path` (not atomically: the caller renames it into place). Throws
-// DeviceError for a page write_cairo would refuse or a cairo error.
-class CairoPdfWriter {
- public:
-  CairoPdfWriter(const std::filesystem::path& path, const CairoOptions& options);
-  ~CairoPdfWriter();
-  CairoPdfWriter(const CairoPdfWriter&) = delete;
-  CairoPdfWriter& operator=(const CairoPdfWriter&) = delete;
-  void add_page(const PlotPage& page);
-  void finish();
-
- private:
-  struct State;
-  std::unique_ptr<State> s_;
-};
+// The PDF settings of these options (PDF is written by core/device/pdf_writer.hpp).
+PdfOptions pdf_options(const CairoOptions& options);
 
 }  // namespace hlr

@@ -6,8 +6,9 @@
 //     page layout + pen plan (core/device/page_plot.hpp) with planning() → encode()
 // and, one frame after another in frame order, appends what encode() made to the file open() returned.
 // encode() does everything that does not depend on the frames before (PNG rasterising and compression,
-// SVG and HPGL text, a JSON frame's text, a PDF page's checks), so the part that runs in order is little
-// more than copying bytes; the output bytes are the same whatever the number of threads.
+// SVG and HPGL text, a JSON frame's text, a PDF page's compressed content stream), so the part that runs
+// in order is little more than copying bytes; the output bytes are the same whatever the number of
+// threads.
 #pragma once
 
 #include <filesystem>
@@ -43,9 +44,9 @@ struct DeviceFrame {
 
 // A frame's share of a file, made by encode() on any thread.
 struct EncodedFrame {
-  std::string bytes;             // what the file gets for this frame
-  std::optional<PlotPage> page;  // PDF: the page to draw (cairo's PDF writer is sequential)
-  std::string file_head;         // JSON: the document's opening, written before the first frame
+  std::string bytes;      // what the file gets for this frame (PDF: the page's compressed content)
+  std::string file_head;  // JSON: the document's opening, written before the first frame
+  double page_width_mm = 0, page_height_mm = 0;  // PDF: the page's size
 };
 
 // A file being written: frames arrive in frame order on one thread. finish() completes it; a file that

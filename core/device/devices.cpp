@@ -87,37 +87,53 @@ DevicePlanning page_planning() {
 class CairoDevice : public Device {
  public:
   explicit CairoDevice(CairoOptions options) : o_(std::move(options)) {}
-  const char* name() const override {
-    return o_.format == CairoFormat::Pdf ? "PDF" : o_.format == CairoFormat::Svg ? "SVG" : "PNG";
-  }
-  bool one_frame_per_file() const override { return o_.format != CairoFormat::Pdf; }
+  const char* name() const override { return o_.format == CairoFormat::Svg ? "SVG" : "PNG"; }
+  bool one_frame_per_file() const override { return true; }
   DevicePlanning planning(double, double) const override { return page_planning(); }
   EncodedFrame encode(const DeviceFrame& frame) const override {
     EncodedFrame out;
-    if (o_.format == CairoFormat::Pdf) {
-      check_cairo_page(frame.plot.page, o_);
-      out.page = frame.plot.page;
-    } else {
-      out.bytes = cairo_page_bytes(frame.plot.page, o_);
-    }
+    out.bytes = cairo_page_bytes(frame.plot.page, o_);
     return out;
   }
   std::unique_ptr<DeviceFile> open(const fs::path& path) const override {
-    if (o_.format != CairoFormat::Pdf) return std::make_unique<ByteFile>(path);
+    return std::make_unique<ByteFile>(path);
+  }
+
+ private:
+  CairoOptions o_;
+};
+
+class PdfDevice : public Device {
+ public:
+  explicit PdfDevice(PdfOptions options) : o_(std::move(options)) {}
+  const char* name() const override { return "PDF"; }
+  bool one_frame_per_file() const override { return false; }
+  DevicePlanning planning(double, double) const override { return page_planning(); }
+  EncodedFrame encode(const DeviceFrame& frame) const override {
+    PdfPage page = make_pdf_page(frame.plot.page, o_);
+    EncodedFrame out;
+    out.bytes = std::move(page.content);
+    out.page_width_mm = page.width_mm;
+    out.page_height_mm = page.height_mm;
+    return out;
+  }
+  std::unique_ptr<DeviceFile> open(const fs::path& path) const override {
     return std::make_unique<PdfFile>(path, o_);
   }
 
  private:
   class PdfFile : public DeviceFile {
    public:
-    PdfFile(const fs::path& path, const CairoOptions& o) : pdf_(path, o) {}
-    void append(EncodedFrame frame) override { pdf_.add_page(*frame.page); }
+    PdfFile(const fs::path& path, const PdfOptions& o) : pdf_(path, o) {}
+    void append(EncodedFrame frame) override {
+      pdf_.add_page({frame.page_width_mm, frame.page_height_mm, std::move(frame.bytes)});
+    }
     void finish() override { pdf_.finish(); }
 
    private:
-    CairoPdfWriter pdf_;
+    PdfWriter pdf_;
   };
-  CairoOptions o_;
+  PdfOptions o_;
 };
 
 class HpglDevice : public Device {
@@ -139,7 +155,9 @@ class HpglDevice : public Device {
     return p;
   }
   EncodedFrame encode(const DeviceFrame& frame) const override {
-    return {to_hpgl(frame.plot.page, profile_, o_), std::nullopt, {}};
+    EncodedFrame out;
+    out.bytes = to_hpgl(frame.plot.page, profile_, o_);
+    return out;
   }
   std::unique_ptr<DeviceFile> open(const fs::path& path) const override {
     return std::make_unique<ByteFile>(path);
@@ -164,7 +182,9 @@ class StepDevice : public Device {
     return p;
   }
   EncodedFrame encode(const DeviceFrame& frame) const override {
-    return {to_plotter_steps(frame.plot.page, o_), std::nullopt, {}};
+    EncodedFrame out;
+    out.bytes = to_plotter_steps(frame.plot.page, o_);
+    return out;
   }
   std::unique_ptr<DeviceFile> open(const fs::path& path) const override {
     return std::make_unique<ByteFile>(path);
@@ -221,6 +241,7 @@ class JsonDevice : public Device {
 }  // namespace
 
 std::unique_ptr<Device> make_cairo_device(const CairoOptions& options) {
+  if (options.format == CairoFormat::Pdf) return std::make_unique<PdfDevice>(pdf_options(options));
   return std::make_unique<CairoDevice>(options);
 }
 std::unique_ptr<Device> make_hpgl_device(const HpglProfile& profile, const HpglOptions& options) {

@@ -11,8 +11,9 @@
 
 namespace hlr {
 
-// PDF (any number of pages), SVG or PNG (one each), as options.format says. Planned on the page grid
-// from the page's top-left corner, with the generic plotter's speeds for the time estimate.
+// PDF (any number of pages; core/device/pdf_writer.hpp), SVG or PNG (one each), as options.format says.
+// Planned on the page grid from the page's top-left corner, with the generic plotter's speeds for the
+// time estimate.
 std::unique_ptr<Device> make_cairo_device(const CairoOptions& options);
 // HP-GL for `profile`: planned in its plotter units from its origin, within the margin its reach needs.
 std::unique_ptr<Device> make_hpgl_device(const HpglProfile& profile, const HpglOptions& options = {});

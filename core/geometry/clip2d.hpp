@@ -4,6 +4,7 @@
 
 #include <optional>
 #include <utility>
+#include <vector>
 
 #include "core/geometry/rect2.hpp"
 #include "core/geometry/vector.hpp"
@@ -31,6 +32,35 @@ inline std::optional<std::pair<double, double>> clip_segment_to_rect(Point2 a, P
     }
   }
   return std::make_pair(s0, s1);
+}
+
+// A polyline clipped to `r`, as the pieces that lie inside: move_to(p) starts a piece, line_to(p)
+// continues it. A polyline leaving and re-entering the rectangle becomes several pieces; a single point
+// inside is a piece of one point (move_to, line_to at the same place: a dot with round caps).
+template <typename MoveTo, typename LineTo>
+void clip_polyline_to_rect(const std::vector<Point2>& pts, const Rect2& r, MoveTo&& move_to, LineTo&& line_to) {
+  if (pts.empty()) return;
+  if (pts.size() == 1) {
+    if (!r.contains(pts[0])) return;
+    move_to(pts[0]);
+    line_to(pts[0]);
+    return;
+  }
+  bool drawing = false;  // the current piece ends at the end of the previous (clipped) segment
+  for (std::size_t i = 1; i < pts.size(); ++i) {
+    const Point2 a0 = pts[i - 1], b0 = pts[i];
+    const auto range = clip_segment_to_rect(a0, b0, r);
+    if (!range) {
+      drawing = false;
+      continue;
+    }
+    const double dx = b0.x - a0.x, dy = b0.y - a0.y;
+    const Point2 a = range->first > 0 ? Point2{a0.x + range->first * dx, a0.y + range->first * dy} : a0;
+    const Point2 b = range->second < 1 ? Point2{a0.x + range->second * dx, a0.y + range->second * dy} : b0;
+    if (!drawing || range->first > 0) move_to(a);
+    line_to(b);
+    drawing = range->second >= 1;
+  }
 }
 
 }  // namespace hlr
