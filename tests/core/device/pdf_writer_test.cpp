@@ -51,7 +51,9 @@ PlotPage page_with(std::string caption) {
 class PdfWriterTest : public ::testing::Test {
  protected:
   void SetUp() override {
-    dir_ = fs::temp_directory_path() / "hlr-pdf-writer-test";
+    // One directory per test: ctest runs them side by side.
+    dir_ = fs::temp_directory_path() /
+           ("hlr-pdf-writer-" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
     fs::remove_all(dir_);
     fs::create_directories(dir_);
   }
