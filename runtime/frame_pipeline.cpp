@@ -95,8 +95,8 @@ void run_frame(const Program& program, int frame, double fps, const PipelineOpti
 // A file being written beside its target, renamed into place by commit(); removed if never committed.
 class StagedFile {
  public:
-  StagedFile(OutputTarget target, std::shared_ptr<const Device> device, int first_frame)
-      : target_(std::move(target)), device_(std::move(device)), first_frame_(first_frame) {
+  StagedFile(OutputTarget target, std::shared_ptr<const Device> device)
+      : target_(std::move(target)), device_(std::move(device)) {
     check_writable(target_);
     const fs::path dir = target_.path.has_parent_path() ? target_.path.parent_path() : fs::path(".");
     // Built by appending: GCC 12 warns falsely (-Wrestrict) on "." + std::string.
@@ -114,9 +114,7 @@ class StagedFile {
   StagedFile(const StagedFile&) = delete;
   StagedFile& operator=(const StagedFile&) = delete;
 
-  const OutputTarget& target() const { return target_; }
-  const Device& device() const { return *device_; }
-  int first_frame() const { return first_frame_; }
+  bool finished() const { return !file_; }
 
   void append(EncodedFrame frame) {
     guard([&] { file_->append(std::move(frame)); });
@@ -124,6 +122,7 @@ class StagedFile {
   void finish() {
     guard([&] { file_->finish(); });
     file_.reset();
+    device_.reset();
   }
   void commit() {
     std::error_code ec;
@@ -150,7 +149,6 @@ class StagedFile {
 
   OutputTarget target_;
   std::shared_ptr<const Device> device_;
-  int first_frame_ = 0;
   fs::path temp_;
   std::unique_ptr<DeviceFile> file_;
   bool committed_ = false;
@@ -182,7 +180,8 @@ class FrameSink {
       files_.clear();  // removes every staged file
       std::rethrow_exception(error_);
     }
-    for (const auto& f : files_) f->finish();
+    for (const auto& f : files_)
+      if (!f->finished()) f->finish();
     for (const auto& f : files_) f->commit();
     return std::move(result_);
   }
@@ -198,11 +197,17 @@ class FrameSink {
       result_.files.push_back(job.target.path);
       first_frames_.push_back(frame);
       if (options_.write && options_.render)
-        files_.push_back(std::make_unique<StagedFile>(job.target, job.device, frame));
+        files_.push_back(std::make_unique<StagedFile>(job.target, job.device));
     } else if (one_frame_per_file(job.target.device)) {
       fail_several_frames(job.target, first_frames_[it->second], frame, options_.run.output.has_value());
     }
-    if (options_.write && options_.render) files_[it->second]->append(std::move(job.encoded));
+    if (options_.write && options_.render) {
+      StagedFile& file = *files_[it->second];
+      file.append(std::move(job.encoded));
+      // A one-frame file is complete now: closed at once, so a 10 000-frame sequence holds no open files,
+      // only the names to rename at the end.
+      if (one_frame_per_file(job.target.device)) file.finish();
+    }
     result_.frames.push_back(std::move(job.record));
   }
 
