@@ -11,6 +11,13 @@
 
 namespace hlr {
 
+// Work below about a millisecond is done on the calling thread: waking the scheduler's threads (the
+// first time, starting them) costs more than sharing it out saves. `items` counts what the caller's
+// unit of work is (candidate edges, faces); `min_items` is how many of them make a millisecond.
+inline unsigned threads_for(std::size_t items, std::size_t min_items, unsigned threads) {
+  return items < min_items ? 1 : threads;
+}
+
 // Calls body(k) once for every k in [0, count), in parallel. threads: 1 runs them in order on this
 // thread; 0 shares the caller's arena (every core, or what `--jobs` allows); N > 1 runs them in an arena
 // of N threads. Results must not depend on which thread ran which k: callers write into slot k.

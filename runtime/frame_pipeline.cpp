@@ -43,7 +43,7 @@ struct FrameJob {
 
 // Everything one frame needs, from the script to the bytes for its file.
 void run_frame(const Program& program, int frame, double fps, const PipelineOptions& options,
-               std::optional<FrameScene>& first, FrameJob& job) {
+               unsigned engine_threads, std::optional<FrameScene>& first, FrameJob& job) {
   const RunSettings& run = options.run;
   FrameScene scene =
       (frame == 0 && first) ? std::move(*first) : program.evaluate(frame_time(frame, run.frame_count, fps));
@@ -64,6 +64,7 @@ void run_frame(const Program& program, int frame, double fps, const PipelineOpti
 
   HlrOptions hlr;
   hlr.include_hidden = settings.hidden;
+  hlr.threads = engine_threads;
   const auto start = Clock::now();
   FrameResult result = render_frame(scene.scene, settings.camera->camera, hlr);
   r.render_seconds = seconds_since(start);
@@ -245,7 +246,7 @@ PipelineResult run_pipeline(const Program& program, const std::vector<int>& fram
   auto work = [&](FrameJob* job) -> FrameJob* {
     const int frame = frames[job->index];
     try {
-      run_frame(program, frame, fps, options, first, *job);
+      run_frame(program, frame, fps, options, jobs == 1 ? 1 : 0, first, *job);
     } catch (EvalError& e) {
       if (options.run.frame_count > 1 && !e.diagnostics.empty())
         e.diagnostics.front().message += " (in frame " + std::to_string(frame) + ")";
@@ -260,13 +261,31 @@ PipelineResult run_pipeline(const Program& program, const std::vector<int>& fram
     if (!sink.take(*job)) stop = true;
   };
 
-  tbb::task_arena arena(static_cast<int>(jobs));
-  arena.execute([&] {
+  if (jobs == 1) {  // no scheduler at all: one frame after another on this thread
+    for (FrameJob* job; !stop && next < frames.size();) {
+      job = new FrameJob;
+      job->index = next++;
+      output(work(job));
+    }
+    return sink.finish();
+  }
+  auto run_all = [&] {
+    if (frames.size() == 1) {  // the frame's own work (objects, edges) is what runs in parallel
+      output(work(new FrameJob));
+      return;
+    }
     tbb::parallel_pipeline(tokens,
                            tbb::make_filter<void, FrameJob*>(tbb::filter_mode::serial_in_order, input) &
                                tbb::make_filter<FrameJob*, FrameJob*>(tbb::filter_mode::parallel, work) &
                                tbb::make_filter<FrameJob*, void>(tbb::filter_mode::serial_in_order, output));
-  });
+  };
+  // Every core: TBB's own arena, started only when work is shared out (a small frame never starts it).
+  if (jobs == hardware) {
+    run_all();
+  } else {
+    tbb::task_arena arena(static_cast<int>(jobs));
+    arena.execute(run_all);
+  }
   return sink.finish();
 }
 

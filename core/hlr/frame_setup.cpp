@@ -284,7 +284,10 @@ FrameSetup prepare_frame(const Scene& scene, const Camera& camera, bool intersec
   const std::size_t chunk = std::max<std::size_t>(1, n / 64);
   const std::size_t chunks = (n + chunk - 1) / chunk;
   std::vector<FrameSetup> parts(chunks);
-  parallel_chunks(chunks, threads, [&](std::size_t k) {
+  std::size_t faces = 0;
+  for (const SceneObject& o : scene.objects) faces += o.solid->faces.size();
+  // Preparing a face takes well under a microsecond: a few thousand are not worth sharing out.
+  parallel_chunks(chunks, threads_for(faces, 4096, threads), [&](std::size_t k) {
     std::vector<Point3> view_vertices;
     {
       FrameSetup& part = parts[k];
