@@ -14,9 +14,9 @@
 
 #include "core/device/atomic_file.hpp"
 #include "core/device/page_layout.hpp"
-#include "core/format_number.hpp"
 #include "core/device/page_style.hpp"
 #include "core/device/pdf_writer.hpp"
+#include "core/format_number.hpp"
 #include "core/geometry/clip2d.hpp"
 
 namespace hlr {
@@ -123,26 +123,19 @@ void draw_page(cairo_t* cr, const PlotPage& page, const CairoOptions& o, double 
   }
 
   const Rect2 box = stroke_clip_box(page, o.pens);
-
-  // Consecutive strokes of one pen and layer share a path: the same picture (dashes restart on every
-  // subpath), smaller files.
-  const std::vector<PlotStroke>& strokes = page.strokes;
-  for (std::size_t i = 0; i < strokes.size();) {
-    const int pen = strokes[i].pen;
-    const StrokeLayer layer = strokes[i].layer;
-    const PenStyle style = o.pens.style(pen);
-    cairo_set_source_rgb(cr, style.r, style.g, style.b);
-    cairo_set_line_width(cr, style.width_mm);
-    if (layer == StrokeLayer::Hidden) {
-      const double dash[] = {dash_on_mm(style.width_mm), dash_off_mm(style.width_mm)};
-      cairo_set_dash(cr, dash, 2, 0);
-    } else {
-      cairo_set_dash(cr, nullptr, 0, 0);
-    }
-    for (; i < strokes.size() && strokes[i].pen == pen && strokes[i].layer == layer; ++i)
-      add_stroke(cr, strokes[i], box);
-    cairo_stroke(cr);
-  }
+  for_each_pen_run(page, o.pens,
+                   [&](const PenStyle& style, StrokeLayer layer, std::size_t first, std::size_t end) {
+                     cairo_set_source_rgb(cr, style.r, style.g, style.b);
+                     cairo_set_line_width(cr, style.width_mm);
+                     if (layer == StrokeLayer::Hidden) {
+                       const double dash[] = {dash_on_mm(style.width_mm), dash_off_mm(style.width_mm)};
+                       cairo_set_dash(cr, dash, 2, 0);
+                     } else {
+                       cairo_set_dash(cr, nullptr, 0, 0);
+                     }
+                     for (std::size_t i = first; i < end; ++i) add_stroke(cr, page.strokes[i], box);
+                     cairo_stroke(cr);
+                   });
   cairo_set_dash(cr, nullptr, 0, 0);
 
   if (o.decorations && !page.caption.empty()) {
@@ -210,7 +203,8 @@ std::string renumber_surface_ids(const std::string& svg) {
 std::string svg_bytes(const PlotPage& page, const CairoOptions& o) {
   std::string bytes;
   // In cairo ≥ 1.16 the document unit makes the size given here millimetres and one user unit 1 mm.
-  SurfaceRef surface{cairo_svg_surface_create_for_stream(append_to_string, &bytes, page.width_mm, page.height_mm)};
+  SurfaceRef surface{
+      cairo_svg_surface_create_for_stream(append_to_string, &bytes, page.width_mm, page.height_mm)};
   check(cairo_surface_status(surface.p));
   cairo_svg_surface_set_document_unit(surface.p, CAIRO_SVG_UNIT_MM);
   draw_all(surface.p, std::span(&page, 1), o, 1, [](cairo_t*, const PlotPage&) {});
@@ -262,9 +256,10 @@ PixelSize png_pixel_size(const PlotPage& page, double dpi) {
     // The largest dpi both limits allow on this page, rounded down to be safe.
     const double by_side = kMaxPngSide * kMmPerInch / std::max(page.width_mm, page.height_mm);
     const double by_area = std::sqrt(kMaxPngMegapixels * 1e6 / (page.width_mm * page.height_mm)) * kMmPerInch;
-    throw DeviceError("a " + format_for_message(page.width_mm) + " x " + format_for_message(page.height_mm) + " mm page at " +
-                      format_for_message(dpi) + " dpi is " + format_for_message(pw) + " x " + format_for_message(ph) +
-                      " pixels; PNG output is limited to " + format_for_message(kMaxPngMegapixels) + " megapixels and " +
+    throw DeviceError("a " + format_for_message(page.width_mm) + " x " + format_for_message(page.height_mm) +
+                      " mm page at " + format_for_message(dpi) + " dpi is " + format_for_message(pw) + " x " +
+                      format_for_message(ph) + " pixels; PNG output is limited to " +
+                      format_for_message(kMaxPngMegapixels) + " megapixels and " +
                       std::to_string(kMaxPngSide) + " pixels a side: lower the dpi to at most " +
                       format_for_message(std::floor(0.999 * std::min(by_side, by_area))));
   }
@@ -276,7 +271,8 @@ void check_cairo_page(const PlotPage& page, const CairoOptions& o) { validate_pa
 PdfOptions pdf_options(const CairoOptions& o) { return {o.pens, o.title, o.creation_date, o.decorations}; }
 
 std::string cairo_page_bytes(const PlotPage& page, const CairoOptions& o) {
-  if (o.format == CairoFormat::Pdf) throw DeviceError("cairo_page_bytes: PDF pages are made by make_pdf_page");
+  if (o.format == CairoFormat::Pdf)
+    throw DeviceError("cairo_page_bytes: PDF pages are made by make_pdf_page");
   validate_page(page, o, "");
   try {
     return o.format == CairoFormat::Svg ? svg_bytes(page, o) : png_bytes(page, o);

@@ -4,6 +4,8 @@
 #pragma once
 
 #include <algorithm>
+#include <cstddef>
+#include <vector>
 
 #include "core/device/pen_style.hpp"
 #include "core/device/plot_page.hpp"
@@ -29,6 +31,21 @@ inline Rect2 stroke_clip_box(const PlotPage& page, const PenTable& pens) {
   for (const PlotStroke& s : page.strokes) widest = std::max(widest, pens.style(s.pen).width_mm);
   const double pad = kClipPadMm + widest;
   return {-pad, -pad, page.width_mm + pad, page.height_mm + pad};
+}
+
+// Consecutive strokes of one pen and layer are drawn as one path (the same picture, smaller files; dashes
+// restart on every subpath): draw(style, layer, first, last) for each run [first, last).
+template <typename Draw>
+void for_each_pen_run(const PlotPage& page, const PenTable& pens, Draw&& draw) {
+  const std::vector<PlotStroke>& strokes = page.strokes;
+  for (std::size_t i = 0; i < strokes.size();) {
+    std::size_t end = i + 1;
+    while (end < strokes.size() && strokes[end].pen == strokes[i].pen &&
+           strokes[end].layer == strokes[i].layer)
+      ++end;
+    draw(pens.style(strokes[i].pen), strokes[i].layer, i, end);
+    i = end;
+  }
 }
 
 }  // namespace hlr
