@@ -70,7 +70,11 @@ void run_frame(const Program& program, int frame, double fps, const PipelineOpti
   r.render_seconds = seconds_since(start);
   r.segments = result.segments.size();
   r.stats = result.stats;
-  resolve_device(scene, run, settings);
+  try {
+    resolve_device(scene, run, settings);
+  } catch (const DeviceError& e) {  // a page the plotter does not take: at the output statement
+    throw OutputError(e.what(), settings.target);
+  }
   job.device = settings.device;
 
   DeviceFrame frame_out;

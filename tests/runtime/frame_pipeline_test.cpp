@@ -146,5 +146,23 @@ TEST_F(FramePipeline, TheLowestFailingFrameIsReportedWhateverTheJobs) {
   }
 }
 
+TEST_F(FramePipeline, ADeviceRefusingTheScriptsPageIsReportedAtItsOutputStatement) {
+  // Found while resolving frame 3's device (its paper), with frames on either side in flight.
+  std::ofstream(dir_ / "paper.hls") << "animate frames 6\n"
+                                    << "camera c = orbit()\n"
+                                    << "draw cube(1)\n"
+                                    << "output \"" << (dir_ / "p-{frame}.hpgl").string()
+                                    << "\" plotter hp7475a\n"
+                                    << "if frame == 3 { paper A0 }\n";
+  for (const char* jobs : {"1", "2"}) {
+    const test::CliResult r = test::run({(dir_ / "paper.hls").string(), "--jobs", jobs});
+    EXPECT_EQ(r.code, 73) << r.err;
+    EXPECT_NE(r.err.find("paper.hls:4:8: error: HPGL: plotter 'hp7475a' takes no 1189 × 841 mm page"),
+              std::string::npos)
+        << r.err;
+    for (int f = 0; f < 6; ++f) EXPECT_FALSE(fs::exists(dir_ / ("p-" + std::to_string(f) + ".hpgl"))) << f;
+  }
+}
+
 }  // namespace
 }  // namespace hlr::runtime
