@@ -141,44 +141,11 @@ Placement place(const HpglProfile& profile, double page_w, double page_h, std::s
   return pl;
 }
 
-// The part t ∈ [t0, t1] of a→b inside the rectangle (core/geometry/clip2d.hpp); false when there is none
-// (or a point).
-bool clip_segment(Point2 a, Point2 b, const Rect2& box, double& t0, double& t1) {
-  const auto range = clip_segment_to_rect(a, b, box);
-  if (!range) return false;
-  t0 = range->first;
-  t1 = range->second;
-  return t0 < t1;
-}
-
-// The pieces of a polyline (plotter units) inside the box.
+// The pieces of a polyline (plotter units) inside the box (core/geometry/clip2d.hpp).
 std::vector<std::vector<Point2>> clip_polyline(const std::vector<Point2>& u, const Rect2& box) {
   std::vector<std::vector<Point2>> out;
-  if (u.size() == 1) {
-    if (box.contains(u[0])) out.push_back(u);
-    return out;
-  }
-  std::vector<Point2> cur;
-  const auto flush = [&] {
-    if (!cur.empty()) out.push_back(std::move(cur));
-    cur.clear();
-  };
-  for (std::size_t i = 1; i < u.size(); ++i) {
-    const Point2 a = u[i - 1], b = u[i];
-    double t0 = 0, t1 = 1;
-    if (!clip_segment(a, b, box, t0, t1)) {
-      flush();
-      continue;
-    }
-    const auto at = [&](double t) { return Point2{a.x + t * (b.x - a.x), a.y + t * (b.y - a.y)}; };
-    if (cur.empty() || t0 > 0) {
-      flush();
-      cur.push_back(t0 > 0 ? at(t0) : a);
-    }
-    cur.push_back(t1 < 1 ? at(t1) : b);
-    if (t1 < 1) flush();
-  }
-  flush();
+  clip_polyline_to_rect(
+      u, box, [&](Point2 p) { out.push_back({p}); }, [&](Point2 p) { out.back().push_back(p); });
   return out;
 }
 

@@ -50,7 +50,7 @@ void clip_polyline_to_rect(const std::vector<Point2>& pts, const Rect2& r, MoveT
   for (std::size_t i = 1; i < pts.size(); ++i) {
     const Point2 a0 = pts[i - 1], b0 = pts[i];
     const auto range = clip_segment_to_rect(a0, b0, r);
-    if (!range) {
+    if (!range || range->first >= range->second) {  // outside, or touching the rectangle at one point
       drawing = false;
       continue;
     }
