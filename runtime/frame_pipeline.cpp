@@ -1,5 +1,6 @@
 #include "runtime/frame_pipeline.hpp"
 
+#include <tbb/global_control.h>
 #include <tbb/parallel_pipeline.h>
 #include <tbb/task_arena.h>
 #include <unistd.h>
@@ -273,6 +274,9 @@ PipelineResult run_pipeline(const Program& program, const std::vector<int>& fram
     }
     return sink.finish();
   }
+  // Worker threads get the stack a main thread has (glibc's 8 MiB), not oneTBB's smaller default: the
+  // engine and the planner run on them as they would on the caller's thread.
+  const tbb::global_control stack(tbb::global_control::thread_stack_size, std::size_t{8} << 20);
   auto run_all = [&] {
     if (frames.size() == 1) {  // the frame's own work (objects, edges) is what runs in parallel
       output(work(new FrameJob));

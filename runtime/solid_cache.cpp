@@ -79,6 +79,8 @@ struct SolidCache::State {
 
 SolidCache::SolidCache(std::size_t max_faces) : s_(std::make_unique<State>()) { s_->max_faces = max_faces; }
 
+SolidCache::~SolidCache() = default;
+
 std::shared_ptr<const Solid> SolidCache::lookup_or_make(const std::string& key,
                                                         const std::shared_ptr<const Solid>& source,
                                                         const Make& make) {

@@ -29,6 +29,9 @@ class SolidCache {
   using Make = std::function<std::shared_ptr<const Solid>()>;
 
   explicit SolidCache(std::size_t max_faces);
+  ~SolidCache();
+  SolidCache(const SolidCache&) = delete;
+  SolidCache& operator=(const SolidCache&) = delete;
 
   // The solid of the generator whose signature is `function` for these arguments: the cached one, else
   // make()'s (kept when the arguments can be keyed: numbers, booleans, strings, vectors, lists and ranges of
