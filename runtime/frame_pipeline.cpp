@@ -3,7 +3,6 @@
 #include <tbb/global_control.h>
 #include <tbb/parallel_pipeline.h>
 #include <tbb/task_arena.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <atomic>
@@ -103,12 +102,12 @@ class StagedFile {
  public:
   StagedFile(OutputTarget target, std::shared_ptr<const Device> device)
       : target_(std::move(target)), device_(std::move(device)) {
-    check_writable(target_);
-    const fs::path dir = target_.path.has_parent_path() ? target_.path.parent_path() : fs::path(".");
-    // Built by appending: GCC 12 warns falsely (-Wrestrict) on "." + std::string.
-    std::string name(1, '.');
-    name.append(target_.path.filename().string()).append(".tmp-").append(std::to_string(::getpid()));
-    temp_ = dir / name;
+    try {
+      check_writable(target_);
+    } catch (const DeviceError& e) {
+      throw OutputError(e.what(), target_);
+    }
+    temp_ = temporary_path_for(target_.path);
     try {
       file_ = device_->open(temp_);
     } catch (const DeviceError& e) {

@@ -119,12 +119,6 @@ std::vector<OutputTarget> plan_outputs(const std::optional<std::string>& cli_pat
   return targets;
 }
 
-void check_writable(const OutputTarget& target) {
-  const fs::path dir = target.path.has_parent_path() ? target.path.parent_path() : fs::path(".");
-  std::error_code ec;
-  if (!fs::is_directory(dir, ec))  // worded as write_atomically() words it
-    throw DeviceError("cannot write '" + target.path.string() + "': directory '" + dir.string() +
-                      "' does not exist");
-}
+void check_writable(const OutputTarget& target) { check_target_directory(target.path); }
 
 }  // namespace hlr::runtime
