@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "core/format_number.hpp"
 #include "runtime/eval_error.hpp"
 #include "runtime/format_value.hpp"
 #include "runtime/source_table.hpp"
@@ -100,13 +101,13 @@ void Bound::fail(std::size_t i, const std::string& reason) const {
 
 double Bound::positive(std::size_t i) const {
   const double x = number(i);
-  if (!(x > 0)) fail(i, "must be positive (got " + format_number(x) + ")");
+  if (!(x > 0)) fail(i, "must be positive (got " + format_for_message(x) + ")");
   return x;
 }
 
 double Bound::non_negative(std::size_t i) const {
   const double x = number(i);
-  if (!(x >= 0)) fail(i, "must not be negative (got " + format_number(x) + ")");
+  if (!(x >= 0)) fail(i, "must not be negative (got " + format_for_message(x) + ")");
   return x;
 }
 
@@ -114,7 +115,7 @@ int Bound::whole(std::size_t i, int lo, int hi) const {
   const double x = number(i);
   if (!(x >= lo && x <= hi) || std::floor(x) != x)
     fail(i, "must be a whole number from " + std::to_string(lo) + " to " + std::to_string(hi) + " (got " +
-                format_number(x) + ")");
+                format_for_message(x) + ")");
   return static_cast<int>(x);
 }
 

@@ -4,6 +4,7 @@
 #include <memory>
 #include <stdexcept>
 
+#include "core/format_number.hpp"
 #include "runtime/eval_error.hpp"
 #include "runtime/format_value.hpp"
 #include "runtime/solid_cache.hpp"
@@ -127,7 +128,7 @@ void for_each_sublist(const CallArgs& call, const Bound& b, std::size_t i, std::
 double crease_angle(const Bound& b, std::size_t i) {
   const double deg = b.number(i);
   if (!(deg >= 0 && deg <= 180))
-    b.fail(i, "must be between 0 and 180 degrees (got " + format_number(deg) + ")");
+    b.fail(i, "must be between 0 and 180 degrees (got " + format_for_message(deg) + ")");
   return deg;
 }
 

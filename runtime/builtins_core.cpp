@@ -1,6 +1,7 @@
 // Lists, strings and groups: len, range, str, group, place.
 #include <cmath>
 
+#include "core/format_number.hpp"
 #include "lang/source.hpp"
 #include "runtime/builtins.hpp"
 #include "runtime/format_value.hpp"
@@ -28,7 +29,7 @@ Value range_(CallArgs& call) {
   const double count = std::ceil((stop - start) / step);
   if (!(count <= static_cast<double>(kMaxListItems)))
     call.fail_call(limit_message("items in a list", kMaxListItems) + ": " + call.site().function +
-                   "() would make " + format_number(count));
+                   "() would make " + format_for_message(count));
   return Value::range({start, step, count > 0 ? static_cast<std::size_t>(count) : 0});
 }
 

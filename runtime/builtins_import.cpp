@@ -9,6 +9,7 @@
 #include <string>
 #include <tuple>
 
+#include "core/format_number.hpp"
 #include "runtime/builtins.hpp"
 #include "runtime/format_value.hpp"
 #include "stdlib/mesh_import.hpp"
@@ -61,7 +62,7 @@ Value import_(CallArgs& call) {
   const std::string written = b.value(0).as_string();
   const double crease = b.number(1);
   if (!(crease >= 0 && crease <= 180))
-    b.fail(1, "must be between 0 and 180 degrees (got " + format_number(crease) + ")");
+    b.fail(1, "must be between 0 and 180 degrees (got " + format_for_message(crease) + ")");
   if (written.empty()) b.fail(0, "is empty; name a mesh file such as \"part.off\"");
 
   fs::path path(written);

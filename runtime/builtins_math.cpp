@@ -3,6 +3,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "core/format_number.hpp"
 #include "runtime/angles.hpp"
 #include "runtime/builtins.hpp"
 #include "runtime/format_value.hpp"
@@ -80,7 +81,7 @@ Value clamp_(CallArgs& call) {
                                             required("hi", kNumber)};
   const Bound b = call.bind(params);
   if (b.number(1) > b.number(2))
-    b.fail(2, "must not be below lo (" + format_number(b.number(1)) + "), got " + format_number(b.number(2)));
+    b.fail(2, "must not be below lo (" + format_for_message(b.number(1)) + "), got " + format_for_message(b.number(2)));
   return Value::number(std::clamp(b.number(0), b.number(1), b.number(2)));
 }
 
@@ -103,7 +104,7 @@ Value smoothstep_(CallArgs& call) {
                                             required("x", kNumber)};
   const Bound b = call.bind(params);
   if (b.number(0) == b.number(1))
-    b.fail(1, "must differ from e0 (both are " + format_number(b.number(0)) + ")");
+    b.fail(1, "must differ from e0 (both are " + format_for_message(b.number(0)) + ")");
   const double t = std::clamp((b.number(2) - b.number(0)) / (b.number(1) - b.number(0)), 0.0, 1.0);
   return finite_number(call, t * t * (3 - 2 * t));
 }

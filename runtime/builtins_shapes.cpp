@@ -6,6 +6,7 @@
 #include <optional>
 #include <string>
 
+#include "core/format_number.hpp"
 #include "runtime/builtins.hpp"
 #include "runtime/format_value.hpp"
 #include "stdlib/shapes.hpp"
@@ -39,7 +40,7 @@ std::vector<Point2> plane_points_arg(const Bound& b, std::size_t i, std::size_t 
     const double off = drop == 2 ? ps[k].z : ps[k].y;
     if (off != 0)
       b.fail(i, "point " + std::to_string(k) + " has " + (drop == 2 ? "z" : "y") + " = " +
-                    format_number(off) +
+                    format_for_message(off) +
                     (drop == 2 ? "; outlines lie in the xy plane (z = 0)"
                                : "; a profile lies in the x-z plane: (r, 0, z)"));
     out.push_back(drop == 2 ? Point2{ps[k].x, ps[k].y} : Point2{ps[k].x, ps[k].z});

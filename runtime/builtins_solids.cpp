@@ -4,6 +4,7 @@
 #include <cmath>
 #include <string>
 
+#include "core/format_number.hpp"
 #include "runtime/builtins.hpp"
 #include "runtime/format_value.hpp"
 #include "stdlib/desens_models.hpp"
@@ -25,7 +26,7 @@ std::vector<Point2> outline_arg(const Bound& b, std::size_t i, const std::string
   out.reserve(points.size());
   for (std::size_t k = 0; k < points.size(); ++k) {
     if (points[k].z != 0)
-      b.fail(i, what + "point " + std::to_string(k) + " has z = " + format_number(points[k].z) +
+      b.fail(i, what + "point " + std::to_string(k) + " has z = " + format_for_message(points[k].z) +
                     "; outlines lie in the xy plane (z = 0)");
     out.push_back({points[k].x, points[k].y});
   }
@@ -110,7 +111,7 @@ Value torus_(CallArgs& call) {
                                             optional("minor", kNumber, Value::number(24)), crease_param()};
   const Bound b = call.bind(params);
   const double big = b.positive(0), small = b.positive(1);
-  if (!(small < big)) b.fail(1, "must be below R (" + format_number(big) + "), got " + format_number(small));
+  if (!(small < big)) b.fail(1, "must be below R (" + format_for_message(big) + "), got " + format_for_message(small));
   const int major = b.whole(2, 3, kMaxCount), minor = b.whole(3, 3, kMaxCount);
   const double deg = crease_angle(b, 4);
   return generated_solid(call, static_cast<std::size_t>(major) * static_cast<std::size_t>(minor), [&] {
@@ -136,8 +137,8 @@ Value lblock_(CallArgs& call) {
   const Vector3 size = b.vector(0);
   if (!(size.x > 0 && size.y > 0 && size.z > 0)) b.fail(0, "must be positive on every axis");
   const double upright = b.positive(1), foot = b.positive(2);
-  if (!(upright < size.x)) b.fail(1, "must be below size.x (" + format_number(size.x) + ")");
-  if (!(foot < size.z)) b.fail(2, "must be below size.z (" + format_number(size.z) + ")");
+  if (!(upright < size.x)) b.fail(1, "must be below size.x (" + format_for_message(size.x) + ")");
+  if (!(foot < size.z)) b.fail(2, "must be below size.z (" + format_for_message(size.z) + ")");
   return generated_solid(call, 8, [&] { return stdlib::l_block({0, 0, 0}, size, upright, foot); });
 }
 

@@ -3,6 +3,7 @@
 // `A then B` (in the language) applies A first.
 #include <cmath>
 
+#include "core/format_number.hpp"
 #include "runtime/angles.hpp"
 #include "runtime/builtins.hpp"
 #include "runtime/format_value.hpp"
@@ -126,7 +127,7 @@ Value matrix_(CallArgs& call) {
     (r == 0 ? a.t.x : r == 1 ? a.t.y : a.t.z) = v[3];
   }
   const double det = a.determinant();
-  if (det == 0 || !std::isfinite(det)) b.fail(0, "is singular (determinant " + format_number(det) + ")");
+  if (det == 0 || !std::isfinite(det)) b.fail(0, "is singular (determinant " + format_for_message(det) + ")");
   return checked(call, a);
 }
 

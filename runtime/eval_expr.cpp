@@ -1,6 +1,7 @@
 // Expressions: literals, names, strings with interpolation, operators, member and index access.
 #include <cmath>
 
+#include "core/format_number.hpp"
 #include "lang/overloaded.hpp"
 #include "runtime/builtins.hpp"
 #include "runtime/eval_detail.hpp"
@@ -19,11 +20,11 @@ std::size_t checked_index(const Value& index, std::size_t size, const lang::Sour
   if (!index.is(ValueKind::Number))
     fail(span, "an index must be a number, got " + kind_with_article(index.kind()));
   const double i = index.as_number();
-  if (std::floor(i) != i) fail(span, "an index must be a whole number, got " + format_number(i));
+  if (std::floor(i) != i) fail(span, "an index must be a whole number, got " + format_for_message(i));
   const double n = static_cast<double>(size);
   if (i >= n || i < -n)
     fail(span,
-         "index " + format_number(i) + " is out of range for " + std::to_string(size) +
+         "index " + format_for_message(i) + " is out of range for " + std::to_string(size) +
              (size == 1 ? " item" : " items"),
          size == 0 ? "the list is empty"
                    : "valid indices are 0 to " + std::to_string(size - 1) + ", or -1 to -" +

@@ -7,6 +7,7 @@
 #include <map>
 #include <string_view>
 
+#include "core/format_number.hpp"
 #include "core/solid/solid_builder.hpp"
 #include "lang/overloaded.hpp"
 #include "runtime/eval_detail.hpp"
@@ -81,7 +82,7 @@ SolidBuildOptions build_options(const lang::SolidStmt& solid, Eval&& eval) {
     }
     auto out_of_range = [&](const std::string& range) {
       fail(option.span,
-           who + "option '" + name + "' must be " + range + " (got " + format_number(value.as_number()) + ")",
+           who + "option '" + name + "' must be " + range + " (got " + format_for_message(value.as_number()) + ")",
            kOptionsHint);
     };
     if (name == "crease") {

@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "core/format_number.hpp"
 #include "runtime/eval_error.hpp"
 #include "runtime/format_value.hpp"
 #include "runtime/limits.hpp"
@@ -35,8 +36,8 @@ using lang::BinaryOp;
 
 double finite(const lang::BinaryExpr& bin, double x, double a, double b) {
   if (!std::isfinite(x))
-    fail(bin.op_span, "arithmetic overflow: " + format_number(a) + " " + lang::to_string(bin.op) + " " +
-                          format_number(b) + " is beyond the largest number (about 1.8e308)");
+    fail(bin.op_span, "arithmetic overflow: " + format_for_message(a) + " " + lang::to_string(bin.op) + " " +
+                          format_for_message(b) + " is beyond the largest number (about 1.8e308)");
   return x;
 }
 
@@ -94,8 +95,8 @@ Value concatenate(const lang::BinaryExpr& bin, const Value& a, const Value& b, B
 Value make_range(const lang::BinaryExpr& bin, double a, double b) {
   const double count = std::ceil(b - a);
   if (count > static_cast<double>(kMaxListItems))
-    fail(bin.op_span, limit_message("items in a list", kMaxListItems) + ": " + format_number(a) + ".." +
-                          format_number(b) + " has " + format_number(count));
+    fail(bin.op_span, limit_message("items in a list", kMaxListItems) + ": " + format_for_message(a) + ".." +
+                          format_for_message(b) + " has " + format_for_message(count));
   return Value::range({a, 1, count > 0 ? static_cast<std::size_t>(count) : 0});
 }
 
