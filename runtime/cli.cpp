@@ -9,6 +9,7 @@
 #include <ctime>
 #include <filesystem>
 #include <ostream>
+#include <sstream>
 
 #include "core/device/atomic_file.hpp"
 #include "runtime/demo_script.hpp"
@@ -213,7 +214,18 @@ int run_demo(CliOptions o, std::ostream& out, std::ostream& err) {
 
 }  // namespace
 
+int run_loaded_program(const Program& program, const CliOptions& options, std::ostream& out,
+                       std::ostream& err) {
+  return run_program(program, options, out, err, Clock::now());
+}
+
 int run_cli(int argc, const char* const argv[], std::ostream& out, std::ostream& err) {
+  std::istringstream nothing;
+  return run_cli(argc, argv, nothing, false, out, err);
+}
+
+int run_cli(int argc, const char* const argv[], std::istream& in, bool in_is_terminal, std::ostream& out,
+            std::ostream& err) {
   const std::optional<CliOptions> options = parse_cli(argc, argv, err);
   if (!options) return kExitUsage;
   try {
@@ -226,6 +238,8 @@ int run_cli(int argc, const char* const argv[], std::ostream& out, std::ostream&
         return kExitOk;
       case CliOptions::Mode::Demo:
         return run_demo(*options, out, err);
+      case CliOptions::Mode::Repl:
+        return run_repl(*options, in, in_is_terminal, out, err);
       case CliOptions::Mode::Render:
       case CliOptions::Mode::Check:
         return run_script(*options, out, err);

@@ -9,6 +9,7 @@
 
 #include "runtime/frame_selection.hpp"
 #include "runtime/output_plan.hpp"
+#include "runtime/program.hpp"
 
 namespace hlr::runtime {
 
@@ -22,7 +23,7 @@ enum ExitCode : int {
 };
 
 struct CliOptions {
-  enum class Mode { Render, Check, Demo, Help, Version } mode = Mode::Render;
+  enum class Mode { Render, Check, Demo, Repl, Help, Version } mode = Mode::Render;
   std::string script;
   std::optional<std::string> output;  // -o
   std::optional<std::string> camera;
@@ -33,12 +34,26 @@ struct CliOptions {
   bool stats = false;
   DeviceOptions device;  // --paper, --margin, --scale, --dpi, --plotter, --pen-order, ...
   int demo_frames = 12;  // --demo --frames N
+  bool repl_requested = false;  // `hlrscript repl` / --repl: a REPL even when stdin is not a terminal
 };
 
 // Parses the command line (Boost.Program_options). Returns nullopt after writing a usage error to `err`.
 std::optional<CliOptions> parse_cli(int argc, const char* const argv[], std::ostream& err);
 std::string usage_text();
 
+// `in` is what a script on standard input or the REPL reads; `in_is_terminal` says whether it is a
+// terminal (then the REPL reads the terminal itself, through libedit). The short form reads nothing.
+int run_cli(int argc, const char* const argv[], std::istream& in, bool in_is_terminal, std::ostream& out,
+            std::ostream& err);
 int run_cli(int argc, const char* const argv[], std::ostream& out, std::ostream& err);
+
+// A loaded script through the whole run (frame 0, checks, the frame pipeline, reports), as for a file:
+// the REPL's :render and scripts read from standard input.
+int run_loaded_program(const Program& program, const CliOptions& options, std::ostream& out, std::ostream& err);
+
+// The REPL (runtime/repl.cpp): a terminal session, a transcript from a pipe when asked for by name, else
+// standard input as a script.
+int run_repl(const CliOptions& options, std::istream& in, bool in_is_terminal, std::ostream& out,
+             std::ostream& err);
 
 }  // namespace hlr::runtime

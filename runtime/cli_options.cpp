@@ -30,8 +30,9 @@ po::options_description visible_options() {
       ("frames", po::value<std::string>()->value_name("A-B"),
        "render frames A to B only (0-based, inclusive)")  //
       ("shard", po::value<std::string>()->value_name("K/N"),
-       "render the frames f with f % N == K-1 (job K of N; with --frames, of those)")                       //
-      ("jobs,j", po::value<std::string>()->value_name("N"), "use N threads for frames and the hidden lines inside them (default 0: one per core)")  //
+       "render the frames f with f % N == K-1 (job K of N; with --frames, of those)")  //
+      ("jobs,j", po::value<std::string>()->value_name("N"),
+       "use N threads for frames and the hidden lines inside them (default 0: one per core)")  //
       ("hidden", po::value<std::string>()->value_name("off|dashed"),
        "hidden lines: off, or dashed (overrides the script)")                       //
       ("stats", "print per-frame statistics (hidden-line and pen plan) to stderr")  //
@@ -59,6 +60,7 @@ po::options_description visible_options() {
       ("plan-budget", po::value<std::string>()->value_name("MS"),
        "time budget of the optimized pen plan per frame (default 200 ms)")                                  //
       ("demo", "render the built-in demo (Desens' aircraft carrier); --frames N sets its approach frames")  //
+      ("repl", "start the REPL (also: hlrscript repl [FILE], or hlrscript alone in a terminal)")            //
       ("help,h", "show this help")                                                                          //
       ("version", "show the version");
   return o;
@@ -96,8 +98,8 @@ bool number_option(const po::variables_map& vm, const char* name, double lo, dou
   double v = 0;
   const auto r = std::from_chars(text.data(), text.data() + text.size(), v);
   if (r.ec != std::errc() || r.ptr != text.data() + text.size() || !(v >= lo && v <= hi)) {
-    error = std::string("--") + name + " " + text + ": expected a number from " + format_for_message(lo) + " to " +
-            format_for_message(hi);
+    error = std::string("--") + name + " " + text + ": expected a number from " + format_for_message(lo) +
+            " to " + format_for_message(hi);
     return false;
   }
   out = v;
@@ -170,6 +172,7 @@ std::string usage_text() {
        "                          [--plotter NAME] [--clip] [--pen-order none|greedy|optimized]\n"
        "       hlrscript check FILE.hls [--camera NAME] [--frames A-B] [--shard K/N]\n"
        "       hlrscript --demo [-o OUT.pdf] [--frames N] [--hidden off|dashed]\n"
+       "       hlrscript [repl [FILE]]             # the REPL; with a pipe on stdin: the script it carries\n"
        "       hlrscript --help | --version\n"
        "\n"
        "Evaluates an hlrscript scene once per frame and draws each frame as an exact hidden-line drawing.\n"
@@ -211,14 +214,18 @@ std::optional<CliOptions> parse_cli(int argc, const char* const argv[], std::ost
     if (!args.empty() && args.front() == "check") {
       o.mode = CliOptions::Mode::Check;
       args.erase(args.begin());
+    } else if ((!args.empty() && args.front() == "repl") || vm.count("repl")) {
+      o.mode = CliOptions::Mode::Repl;
+      o.repl_requested = true;
+      if (!args.empty() && args.front() == "repl") args.erase(args.begin());
+    } else if (args.empty()) {
+      o.mode = CliOptions::Mode::Repl;  // a terminal session, or standard input as a script
     }
-    if (args.empty())
-      return usage_error(err, o.mode == CliOptions::Mode::Check
-                                  ? "check needs a script: hlrscript check FILE.hls"
-                                  : "no script given (the REPL is not part of this build)");
+    if (args.empty() && o.mode == CliOptions::Mode::Check)
+      return usage_error(err, "check needs a script: hlrscript check FILE.hls");
     if (args.size() > 1)
       return usage_error(err, "one script at a time (got '" + args[0] + "' and '" + args[1] + "')");
-    o.script = args.front();
+    if (!args.empty()) o.script = args.front();
   }
 
   std::string error;
@@ -232,8 +239,10 @@ std::optional<CliOptions> parse_cli(int argc, const char* const argv[], std::ost
     if (o.mode == CliOptions::Mode::Demo) {
       int n = 0;
       const auto r = std::from_chars(text.data(), text.data() + text.size(), n);
-      if (r.ec != std::errc() || r.ptr != text.data() + text.size() || n < 1 || n >= static_cast<int>(kMaxFrames))
-        return usage_error(err, "--demo --frames needs a whole number from 1 to " + std::to_string(kMaxFrames - 1));
+      if (r.ec != std::errc() || r.ptr != text.data() + text.size() || n < 1 ||
+          n >= static_cast<int>(kMaxFrames))
+        return usage_error(
+            err, "--demo --frames needs a whole number from 1 to " + std::to_string(kMaxFrames - 1));
       o.demo_frames = n;
     } else if (!(o.frames = parse_frame_range(text, error))) {
       return usage_error(err, error);

@@ -1,6 +1,10 @@
 // hlrscript: the command-line entry point. Everything happens in run_cli (runtime/cli.hpp).
+#include <unistd.h>
+
 #include <iostream>
 
 #include "runtime/cli.hpp"
 
-int main(int argc, char** argv) { return hlr::runtime::run_cli(argc, argv, std::cout, std::cerr); }
+int main(int argc, char** argv) {
+  return hlr::runtime::run_cli(argc, argv, std::cin, ::isatty(STDIN_FILENO) == 1, std::cout, std::cerr);
+}

@@ -80,7 +80,10 @@ OutputTarget target_for_frame(const std::optional<std::string>& cli_pattern, con
     if (!problem.empty()) fail(frame.script_output->span, "output " + problem, hint);
     target.span = frame.script_output->span;
   } else {
-    target.path = fs::path(program.main().source->name()).stem().string() + ".pdf";
+    // "<stdin>" and "<session>" name no file: their output is stdin.pdf, session.pdf.
+    std::string stem = fs::path(program.main().source->name()).stem().string();
+    std::erase_if(stem, [](char c) { return c == '<' || c == '>'; });
+    target.path = stem + ".pdf";
     const std::string problem = output_problem(target.path, program);
     if (!problem.empty()) throw RunError(problem, "name the output with -o OUT.pdf", 64);
   }

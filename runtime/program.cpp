@@ -25,7 +25,10 @@ std::unique_ptr<Program> Program::from_text(const std::string& display_name, con
   return std::unique_ptr<Program>(new Program(std::move(sources), main));
 }
 
-FrameScene Program::evaluate(const FrameTime& time) const {
+FrameScene Program::evaluate(const FrameTime& time) const { return evaluate(time, nullptr); }
+
+FrameScene Program::evaluate(const FrameTime& time,
+                             const std::function<void(const Evaluator&)>& inspect) const {
   if (!parsed())
     throw EvalError(main_->diagnostics, ErrorKind::Script,
                     std::to_string(main_->diagnostics.size()) + " syntax errors in " + main_->source->name());
@@ -35,6 +38,7 @@ FrameScene Program::evaluate(const FrameTime& time) const {
   run_on_big_stack([&] {
     Evaluator evaluator(*sources_, scene);
     evaluator.run(*main_);
+    if (inspect) inspect(evaluator);
   });
   scene.evaluate_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return scene;

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <filesystem>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -12,6 +13,8 @@
 #include "runtime/source_table.hpp"
 
 namespace hlr::runtime {
+
+class Evaluator;
 
 class Program {
  public:
@@ -29,6 +32,8 @@ class Program {
   // with syntax errors). Runs on a thread with a large stack (big_stack.hpp), so no script can overflow
   // the caller's.
   FrameScene evaluate(const FrameTime& time) const;
+  // The same, then `inspect` sees the evaluator (its top-level names) before it is gone (the REPL).
+  FrameScene evaluate(const FrameTime& time, const std::function<void(const Evaluator&)>& inspect) const;
 
   const SourceTable& sources() const { return *sources_; }
   const SourceEntry& main() const { return *main_; }

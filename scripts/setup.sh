@@ -4,9 +4,9 @@
 set -euo pipefail
 packages=(
   build-essential cmake ninja-build pkg-config
-  libcairo2-dev nlohmann-json3-dev tao-pegtl-dev libboost-program-options-dev libtbb-dev zlib1g-dev
+  libcairo2-dev nlohmann-json3-dev tao-pegtl-dev libboost-program-options-dev libtbb-dev zlib1g-dev libedit-dev
   libgtest-dev libgmock-dev libbenchmark-dev
-  poppler-utils hp2xx librsvg2-bin
+  poppler-utils hp2xx librsvg2-bin tmux
 )
 missing=()
 for p in "${packages[@]}"; do

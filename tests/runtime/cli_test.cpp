@@ -33,7 +33,8 @@ TEST(Cli, HelpAndVersion) {
 }
 
 TEST(Cli, UsageErrors) {
-  EXPECT_EQ(run({}).code, 64);
+  // No script: standard input is the script (here empty, so it declares no camera).
+  EXPECT_EQ(run({}).code, 65);
   EXPECT_EQ(run({"--bogus", "a.hls"}).code, 64);
   EXPECT_EQ(run({"a.hls", "b.hls"}).code, 64);
   EXPECT_EQ(run({"a.hls", "--frames", "x"}).code, 64);

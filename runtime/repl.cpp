@@ -1,0 +1,97 @@
+// The REPL's loop: lines from the terminal (libedit) or a pipe into a ReplSession, replies out. When
+// standard input is not a terminal and no REPL was asked for by name, it is a script (`<stdin>`).
+#include <signal.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <istream>
+#include <ostream>
+#include <sstream>
+
+#include "runtime/cli.hpp"
+#include "runtime/line_reader.hpp"
+#include "runtime/program.hpp"
+#include "runtime/repl_session.hpp"
+#include "runtime/source_table.hpp"
+
+namespace hlr::runtime {
+
+namespace {
+
+std::atomic<bool> interrupted{false};
+
+void on_interrupt(int) { interrupted = true; }
+
+// Ctrl-C cancels the line being typed instead of ending the process; restored on leaving.
+class InterruptGuard {
+ public:
+  InterruptGuard() {
+    struct sigaction a {};
+    a.sa_handler = on_interrupt;
+    sigemptyset(&a.sa_mask);
+    ::sigaction(SIGINT, &a, &before_);
+  }
+  ~InterruptGuard() { ::sigaction(SIGINT, &before_, nullptr); }
+  InterruptGuard(const InterruptGuard&) = delete;
+  InterruptGuard& operator=(const InterruptGuard&) = delete;
+
+ private:
+  struct sigaction before_ {};
+};
+
+int run_stdin_script(const CliOptions& o, std::istream& in, std::ostream& out, std::ostream& err) {
+  std::ostringstream text;
+  text << in.rdbuf();
+  const auto program =
+      Program::from_text("<stdin>", text.str(), std::filesystem::current_path() / "stdin.hls");
+  if (!program->parsed()) {
+    print_diagnostics(err, program->syntax_errors(), program->sources());
+    return kExitScript;
+  }
+  return run_loaded_program(*program, o, out, err);
+}
+
+}  // namespace
+
+int run_repl(const CliOptions& o, std::istream& in, bool terminal, std::ostream& out, std::ostream& err) {
+  if (!terminal && !o.repl_requested) return run_stdin_script(o, in, out, err);
+
+  ReplSession session(terminal_size(STDOUT_FILENO));
+  if (!o.script.empty()) out << session.feed(":load " + o.script).text;
+  std::unique_ptr<LineReader> reader =
+      terminal ? make_terminal_reader(default_history_path(),
+                                      [&](const std::string& line, const std::string& word) {
+                                        return session.completions(line, word);
+                                      })
+               : make_stream_reader(in, out, false);
+  if (terminal)
+    out << "hlrscript 0.1.0 REPL: statements as in a script, :help for commands, :quit or Ctrl-D to leave\n";
+  const InterruptGuard guard;
+  std::string entry;
+  for (;;) {
+    interrupted = false;
+    const std::optional<std::string> line = reader->read(session.continuing() ? "...> " : "hls> ");
+    if (!line) {
+      if (interrupted && terminal) {  // Ctrl-C: drop what was typed, stay
+        session.cancel_input();
+        entry.clear();
+        out << "\n";
+        continue;
+      }
+      if (terminal) out << "\n";
+      break;
+    }
+    entry += *line + "\n";
+    session.set_terminal_size(terminal_size(STDOUT_FILENO));
+    const ReplReply reply = session.feed(*line);
+    if (reply.kind == ReplReply::Kind::More) continue;
+    reader->remember(entry.substr(0, entry.size() - 1));
+    entry.clear();
+    out << reply.text << std::flush;
+    if (reply.kind == ReplReply::Kind::Quit) break;
+  }
+  (void)err;
+  return kExitOk;
+}
+
+}  // namespace hlr::runtime

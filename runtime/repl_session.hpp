@@ -1,0 +1,77 @@
+// The REPL's state and what each input does to it, without a terminal (runtime/repl.cpp reads the lines).
+//
+// The session is a script: the statements accepted so far, in order. An input is accepted only when the
+// whole session, with it, evaluates without error — so an error never changes the state. A definition
+// of a name the session already has replaces the old one (the newest wins; the old statement is dropped
+// and named in the reply). An expression alone is evaluated after the session and its value shown
+// (a solid as faces, edges and bounds). Input the parser could not finish (it stopped at the end:
+// an open brace, a trailing operator) waits for more lines. `:` commands look at and save the scene;
+// see help_text().
+#pragma once
+
+#include <cstddef>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "runtime/terminal_picture.hpp"
+
+namespace hlr::runtime {
+
+struct ReplReply {
+  enum class Kind { Done, More, Error, Quit } kind = Kind::Done;
+  std::string text;  // to print (ends in '\n' when not empty)
+};
+
+class ReplSession {
+ public:
+  explicit ReplSession(TerminalSize size = {});
+
+  // One line of input (without its newline).
+  ReplReply feed(const std::string& line);
+  // Drops a half-typed statement (Ctrl-C at the prompt).
+  void cancel_input() { pending_.clear(); }
+  bool continuing() const { return !pending_.empty(); }
+
+  // The session as a runnable script (what :save writes).
+  std::string script() const;
+  // Words for Tab: keywords, built-ins, the session's names, commands.
+  std::vector<std::string> completions(const std::string& line, const std::string& word) const;
+
+  void set_terminal_size(TerminalSize size) { size_ = size; }
+
+ private:
+  struct Chunk {
+    std::string text;                // one accepted input, as typed
+    std::vector<std::string> names;  // the top-level names it defines
+    std::vector<std::string> cameras;
+  };
+  struct View;  // a rendered frame
+
+  ReplReply accept(const std::string& text);
+  ReplReply evaluate_expression(const std::string& text);
+  ReplReply command(const std::string& line);
+  ReplReply load(const std::filesystem::path& path);
+  ReplReply show();
+  ReplReply stats();
+  ReplReply scene();
+  ReplReply render(const std::string& file);
+  ReplReply save(const std::string& file);
+  std::string join(const std::vector<Chunk>& chunks) const;
+  std::optional<View> view(std::string& error) const;
+
+  TerminalSize size_;
+  std::vector<Chunk> chunks_;
+  std::vector<std::vector<Chunk>> undo_;  // the session before each accepted input
+  std::string pending_;                   // lines of an unfinished statement
+  int frame_ = 0;
+  std::optional<bool> hidden_;                   // :hidden on|off
+  std::optional<std::string> camera_;            // :camera NAME
+  std::optional<std::filesystem::path> loaded_;  // for :reload
+};
+
+// The commands and what they do, one line each.
+std::string repl_help_text();
+
+}  // namespace hlr::runtime

@@ -1,0 +1,64 @@
+#!/usr/bin/env bash
+# The REPL in a real terminal (tmux): Tab completion, a continuation line, Ctrl-C cancelling it, :show,
+# an error followed by a correct line, history kept across sessions. Usage: repl_tmux.sh HLRSCRIPT WORKDIR
+set -euo pipefail
+hlrscript=$1
+work=$2
+rm -rf "$work"
+mkdir -p "$work"
+export XDG_STATE_HOME=$work/state
+socket=$work/tmux.sock
+session=repl
+cleanup() { tmux -S "$socket" kill-server 2>/dev/null || true; }
+trap cleanup EXIT
+
+screen() { tmux -S "$socket" capture-pane -t "$session" -p; }
+# Waits (up to 20 s) until the pane shows `text`; prints the pane and fails otherwise.
+expect() {
+  for _ in $(seq 200); do
+    if screen | grep -qF -- "$1"; then return 0; fi
+    sleep 0.1
+  done
+  echo "expected to see: $1"
+  screen
+  exit 1
+}
+keys() { tmux -S "$socket" send-keys -t "$session" "$@"; }
+
+tmux -S "$socket" new-session -d -s "$session" -x 100 -y 40 -c "$work" "$hlrscript"
+expect "hls>"
+keys 'draw cub' Tab
+expect "draw cube"
+keys '(2)' Enter
+expect "scene: 1 objects, 6 faces"
+keys 'camera c = lookat(eye: (5, -7, 4), target: (0, 0, 0))' Enter
+expect "camera c"
+keys 'let q = (1,' Enter
+expect "...>"
+keys C-c
+keys 'q' Enter
+expect "unknown name 'q'"
+keys 'let q = 1 +* 2' Enter
+expect "expected an operand after the operator"
+keys 'let q = 40 + 2' Enter
+expect "q = 42"
+keys ':sh' Tab Enter
+expect "camera c, frame 0: 9 visible pieces"
+# The picture has the cube's outline: vertical edges drawn in braille (a full left or right dot column).
+screen | grep -qF -e '⡇' -e '⢸' || { echo "no braille picture"; screen; exit 1; }
+keys ':save saved.hls' Enter
+expect "saved 3 inputs to saved.hls"
+keys C-d
+for _ in $(seq 100); do tmux -S "$socket" has-session -t "$session" 2>/dev/null || break; sleep 0.1; done
+grep -q 'q\\040=\\04040\\040+\\0402' "$XDG_STATE_HOME/hlrscript/history" || { echo "history not kept"; cat "$XDG_STATE_HOME/hlrscript/history"; exit 1; }
+
+# A second session finds the first one's history: Up brings back its last entry.
+tmux -S "$socket" new-session -d -s "$session" -x 100 -y 40 -c "$work" "$hlrscript"
+expect "hls>"
+keys Up
+expect ":save saved.hls"
+keys C-u ':quit' Enter
+# The saved script renders.
+"$hlrscript" "$work/saved.hls" -o "$work/saved.pdf" >/dev/null
+test -s "$work/saved.pdf"
+echo "repl session ok"
