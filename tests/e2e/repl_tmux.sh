@@ -2,7 +2,7 @@
 # The REPL in a real terminal (tmux): Tab completion, a continuation line, Ctrl-C cancelling it, :show,
 # an error followed by a correct line, history kept across sessions. Usage: repl_tmux.sh HLRSCRIPT WORKDIR
 set -euo pipefail
-hlrscript=$1
+hlrscript=$(realpath "$1")
 work=$2
 rm -rf "$work"
 mkdir -p "$work"
