@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "tests/runtime/cli_run.hpp"
+#include "tests/runtime/runtime_test_support.hpp"
 
 namespace hlr::runtime {
 namespace {
@@ -28,19 +29,12 @@ const char* kTurntable =
 class FramePipeline : public ::testing::Test {
  protected:
   void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("hlr-pipeline-" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
     script_ = dir_ / "turntable.hls";
     std::ofstream(script_) << kTurntable;
     // A fixed PDF creation date, so that two runs can give the same bytes.
     ::setenv("SOURCE_DATE_EPOCH", "1700000000", 1);
   }
-  void TearDown() override {
-    ::unsetenv("SOURCE_DATE_EPOCH");
-    fs::remove_all(dir_);
-  }
+  void TearDown() override { ::unsetenv("SOURCE_DATE_EPOCH"); }
 
   // Every file of `sub`, by name.
   std::map<std::string, std::string> files_in(const fs::path& sub) const {
@@ -61,7 +55,10 @@ class FramePipeline : public ::testing::Test {
     return files_in(sub);
   }
 
-  fs::path dir_, script_;
+  const test::TempDir scratch_{std::string("pipeline-") +
+                               ::testing::UnitTest::GetInstance()->current_test_info()->name()};
+  const fs::path dir_ = scratch_.path();
+  fs::path script_;
 };
 
 TEST_F(FramePipeline, BytesDoNotDependOnJobs) {

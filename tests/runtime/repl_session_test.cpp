@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "tests/runtime/cli_run.hpp"
+#include "tests/runtime/runtime_test_support.hpp"
 
 namespace hlr::runtime {
 namespace {
@@ -149,20 +150,15 @@ TEST(ReplSession, CompletionOffersBuiltinsNamesAndCommands) {
 
 class ReplFiles : public ::testing::Test {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("hlr-repl-" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
   // The JSON without its title line (the title is the script's name, which differs).
   static std::string without_title(std::string json) {
     const std::size_t at = json.find("\"title\"");
     if (at != std::string::npos) json.erase(at, json.find('\n', at) - at + 1);
     return json;
   }
-  fs::path dir_;
+  const test::TempDir scratch_{std::string("repl-") +
+                               ::testing::UnitTest::GetInstance()->current_test_info()->name()};
+  const fs::path dir_ = scratch_.path();
 };
 
 TEST_F(ReplFiles, SaveWritesAScriptThatRendersTheSameDrawing) {

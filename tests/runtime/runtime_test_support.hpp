@@ -14,8 +14,11 @@
 #include "runtime/format_value.hpp"
 #include "runtime/program.hpp"
 #include "runtime/source_table.hpp"
+#include "tests/support/temp_dir.hpp"
 
 namespace hlr::runtime::test {
+
+using hlr::test::TempDir;
 
 inline std::string line_col(const lang::Diagnostic& d) {
   return std::to_string(d.span.begin.line) + ":" + std::to_string(d.span.begin.column) + ": " + d.message;
@@ -73,33 +76,5 @@ inline std::string value(const std::string& expr, const std::string& prelude = "
     return "error: " + line_col(e.diagnostics.front());
   }
 }
-
-// A fresh empty directory under the system's temporary directory (unique per process, since ctest runs
-// tests in parallel), removed by the destructor.
-class TempDir {
- public:
-  explicit TempDir(const std::string& name)
-      : path_(std::filesystem::temp_directory_path() / ("hlr-" + name + "-" + std::to_string(::getpid()))) {
-    std::filesystem::remove_all(path_);
-    std::filesystem::create_directories(path_);
-  }
-  ~TempDir() {
-    std::error_code ec;
-    std::filesystem::remove_all(path_, ec);
-  }
-  TempDir(const TempDir&) = delete;
-  TempDir& operator=(const TempDir&) = delete;
-
-  const std::filesystem::path& path() const { return path_; }
-  std::filesystem::path write(const std::string& relative, const std::string& text) const {
-    const std::filesystem::path p = path_ / relative;
-    std::filesystem::create_directories(p.parent_path());
-    std::ofstream(p) << text;
-    return p;
-  }
-
- private:
-  std::filesystem::path path_;
-};
 
 }  // namespace hlr::runtime::test

@@ -12,6 +12,7 @@
 #include <string>
 
 #include "core/device/atomic_file.hpp"
+#include "tests/support/temp_dir.hpp"
 
 namespace hlr {
 namespace {
@@ -50,15 +51,9 @@ PlotPage page_with(std::string caption) {
 
 class PdfWriterTest : public ::testing::Test {
  protected:
-  void SetUp() override {
-    // One directory per test: ctest runs them side by side.
-    dir_ = fs::temp_directory_path() /
-           ("hlr-pdf-writer-" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-  fs::path dir_;
+  const test::TempDir scratch_{std::string("pdf-writer-") +
+                               ::testing::UnitTest::GetInstance()->current_test_info()->name()};
+  const fs::path dir_ = scratch_.path();
 };
 
 TEST_F(PdfWriterTest, MetadataInAnyScriptAndAFixedDate) {
