@@ -127,6 +127,7 @@ int run_program(const Program& program, const CliOptions& o, std::ostream& out, 
     options.run.device.creation_date = creation_date_from_environment();
     options.jobs = o.jobs;
     options.render = o.mode != CliOptions::Mode::Check;
+    options.keep_records = o.stats;  // a long sequence keeps no per-frame record unless asked
 
     // Mistakes visible in frame 0 are reported before any rendering: no camera, a bad output name, a
     // missing directory, one file named for several frames of a one-frame device.
@@ -154,23 +155,19 @@ int run_program(const Program& program, const CliOptions& o, std::ostream& out, 
     print_diagnostics(err, result.warnings, program.sources());
     if (o.stats && options.render) print_stats(err, result);
 
-    std::size_t faces = 0, segments = 0;
-    for (const FrameRecord& f : result.frames) {
-      faces += f.faces;
-      segments += f.segments;
-    }
+    const std::size_t faces = result.faces, segments = result.segments;
     const std::string files =
         result.files.front().string() +
         (result.files.size() > 1 ? " and " + std::to_string(result.files.size() - 1) + " more files" : "");
     if (o.mode == CliOptions::Mode::Check) {
-      out << name << ": ok: " << result.frames.size() << (result.frames.size() == 1 ? " frame" : " frames")
+      out << name << ": ok: " << result.frame_count << (result.frame_count == 1 ? " frame" : " frames")
           << " evaluated, " << objects << " objects in frame 0, " << faces
           << " faces drawn in all, cameras: " << cameras << "; would write " << files << "\n";
       return kExitOk;
     }
     char line[256];
-    std::snprintf(line, sizeof line, ": %zu %s, %zu segments in %.2f s\n", result.frames.size(),
-                  result.frames.size() == 1 ? "frame" : "frames", segments,
+    std::snprintf(line, sizeof line, ": %zu %s, %zu segments in %.2f s\n", result.frame_count,
+                  result.frame_count == 1 ? "frame" : "frames", segments,
                   std::chrono::duration<double>(Clock::now() - start).count());
     out << "wrote " << files << line;
     return kExitOk;

@@ -213,7 +213,10 @@ class FrameSink {
       // only the names to rename at the end.
       if (one_frame_per_file(job.target.device)) file.finish();
     }
-    result_.frames.push_back(std::move(job.record));
+    ++result_.frame_count;
+    result_.faces += job.record.faces;
+    result_.segments += job.record.segments;
+    if (options_.keep_records) result_.frames.push_back(std::move(job.record));
   }
 
   const PipelineOptions& options_;

@@ -36,6 +36,7 @@ struct PipelineOptions {
   bool render = true;          // false: evaluate and resolve cameras and files only (hlrscript check)
   bool write = true;           // false: render and plan, but write no file (tests, the REPL)
   bool keep_segments = false;  // FrameRecord::segments holds the frame's pieces
+  bool keep_records = true;    // PipelineResult::frames has every frame's record (else totals only)
 };
 
 // What became of one frame, in frame order.
@@ -55,7 +56,8 @@ struct FrameRecord {
 };
 
 struct PipelineResult {
-  std::vector<FrameRecord> frames;           // in the order of `frames` given
+  std::vector<FrameRecord> frames;           // in the order of `frames` given; with keep_records
+  std::size_t frame_count = 0, faces = 0, segments = 0;  // totals over every frame
   std::vector<std::filesystem::path> files;  // written (or that would be), in order of first frame
   std::vector<lang::Diagnostic> warnings;    // from every frame, each distinct one once
 };
