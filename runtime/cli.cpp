@@ -152,7 +152,14 @@ int run_program(const Program& program, const CliOptions& o, std::ostream& out, 
     const std::size_t objects = first.scene.objects.size();
 
     const PipelineResult result = run_pipeline(program, frames, fps, options, std::move(first));
-    print_diagnostics(err, result.warnings, program.sources());
+    std::vector<lang::Diagnostic> shown;
+    std::size_t notes = 0;
+    for (const lang::Diagnostic& w : result.warnings)
+      if (w.severity != lang::Severity::Note || o.verbose)
+        shown.push_back(w);
+      else
+        ++notes;
+    print_diagnostics(err, shown, program.sources());
     if (o.stats && options.render) print_stats(err, result);
 
     const std::size_t faces = result.faces, segments = result.segments;
@@ -170,6 +177,9 @@ int run_program(const Program& program, const CliOptions& o, std::ostream& out, 
                   result.frame_count == 1 ? "frame" : "frames", segments,
                   std::chrono::duration<double>(Clock::now() - start).count());
     out << "wrote " << files << line;
+    if (notes > 0)
+      err << "hlrscript: " << notes << (notes == 1 ? " note" : " notes")
+          << " on what the script's solid options accept (--verbose shows them)\n";
     return kExitOk;
   } catch (const EvalError& e) {
     return report(err, e, &program);

@@ -32,6 +32,7 @@ struct CliOptions {
   std::optional<bool> hidden;
   unsigned jobs = 0;  // --jobs: threads for frames and the work inside them; 0: one per core
   bool stats = false;
+  bool verbose = false;  // --verbose: also the notes on what the script asked to accept
   DeviceOptions device;  // --paper, --margin, --scale, --dpi, --plotter, --pen-order, ...
   int demo_frames = 12;  // --demo --frames N
   bool repl_requested = false;  // `hlrscript repl` / --repl: a REPL even when stdin is not a terminal

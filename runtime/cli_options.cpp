@@ -60,6 +60,7 @@ po::options_description visible_options() {
       ("plan-budget", po::value<std::string>()->value_name("MS"),
        "time budget of the optimized pen plan per frame (default 200 ms)")                                  //
       ("demo", "render the built-in demo (Desens' aircraft carrier); --frames N sets its approach frames")  //
+      ("verbose", "also print notes on what the script's options accept (warped faces, crossing holes)")    //
       ("repl", "start the REPL (also: hlrscript repl [FILE], or hlrscript alone in a terminal)")            //
       ("help,h", "show this help")                                                                          //
       ("version", "show the version");
@@ -265,6 +266,7 @@ std::optional<CliOptions> parse_cli(int argc, const char* const argv[], std::ost
     o.hidden = v == "dashed";
   }
   o.stats = vm.count("stats") > 0;
+  o.verbose = vm.count("verbose") > 0;
   if (!parse_device_options(vm, o.device, error)) return usage_error(err, error);
   if (o.mode == CliOptions::Mode::Check && o.output) return usage_error(err, "check writes nothing; drop -o");
   return o;

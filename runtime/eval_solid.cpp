@@ -82,7 +82,8 @@ SolidBuildOptions build_options(const lang::SolidStmt& solid, Eval&& eval) {
     }
     auto out_of_range = [&](const std::string& range) {
       fail(option.span,
-           who + "option '" + name + "' must be " + range + " (got " + format_for_message(value.as_number()) + ")",
+           who + "option '" + name + "' must be " + range + " (got " + format_for_message(value.as_number()) +
+               ")",
            kOptionsHint);
     };
     if (name == "crease") {
@@ -140,11 +141,21 @@ void Evaluator::exec_solid(const lang::SolidStmt& solid, const ScopePtr& scope) 
   budget_.step(solid.name.span, solid.items.size());
 
   SolidBuildResult result = builder.build();
+  // What the script's own options asked to accept (a raised planarity, crossing holes) is a note, shown
+  // with --verbose: legacy data known to be warped should not warn on every run.
+  auto given = [&](std::string_view option) {
+    return std::any_of(solid.options.begin(), solid.options.end(),
+                       [&](const lang::Argument& a) { return a.label && a.label->text == option; });
+  };
+  const bool accepted_warps = given("planarity"), accepted_holes = given("crossing_holes");
   std::vector<lang::Diagnostic> errors;
   for (const SolidDiagnostic& sd : result.diagnostics) {
     lang::Diagnostic d;
     d.severity =
         sd.severity == SolidDiagnostic::Severity::Error ? lang::Severity::Error : lang::Severity::Warning;
+    if (d.severity == lang::Severity::Warning &&
+        ((sd.code == "non-planar" && accepted_warps) || (sd.code == "bad-hole" && accepted_holes)))
+      d.severity = lang::Severity::Note;
     const bool tagged = sd.tag >= 0 && static_cast<std::size_t>(sd.tag) < item_spans.size();
     d.span = tagged ? item_spans[static_cast<std::size_t>(sd.tag)] : solid.name.span;
     d.message = "solid '" + solid.name.text + "': " + sd.message;

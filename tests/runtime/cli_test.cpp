@@ -112,3 +112,31 @@ TEST(Cli, ABrokenScriptWritesNothing) {
 
 }  // namespace
 }  // namespace hlr::runtime
+
+namespace hlr::runtime {
+namespace {
+
+// Desens' carrier asks, by its solid options, to accept its warped hull and crossing hole: a run says
+// how many notes that gave and prints none; --verbose prints them.
+TEST(Cli, NotesOnAcceptedLegacyDataOnlyWithVerbose) {
+  const test::TempDir dir("cli-notes");
+  const std::string script =
+      (std::filesystem::path(HLR_TEST_DATA_DIR).parent_path().parent_path() / "examples/desens/carrier-2.hls")
+          .string();
+  const test::CliResult quiet = run({script, "-o", (dir.path() / "a.json").string()});
+  ASSERT_EQ(quiet.code, 0) << quiet.err;
+  EXPECT_EQ(quiet.err,
+            "hlrscript: 5 notes on what the script's solid options accept (--verbose shows them)\n");
+  const test::CliResult verbose = run({script, "-o", (dir.path() / "b.json").string(), "--verbose"});
+  ASSERT_EQ(verbose.code, 0) << verbose.err;
+  EXPECT_NE(verbose.err.find("carrier-model.hls:111:3: note: solid 'carrier': face 13 is not planar"),
+            std::string::npos)
+      << verbose.err;
+  EXPECT_NE(verbose.err.find("note: solid 'carrier': hole 1 of face 17 crosses its outer boundary"),
+            std::string::npos)
+      << verbose.err;
+  EXPECT_EQ(verbose.err.find("warning:"), std::string::npos) << verbose.err;
+}
+
+}  // namespace
+}  // namespace hlr::runtime
