@@ -55,6 +55,10 @@ std::filesystem::path CallArgs::script_directory() const {
   return entry ? entry->path.parent_path() : std::filesystem::current_path();
 }
 
+void CallArgs::note_input(const std::filesystem::path& path) const {
+  if (sources_) sources_->add_input(path);
+}
+
 bool CallArgs::has_label(std::string_view label) const {
   for (const Arg& a : args_)
     if (a.label == label) return true;

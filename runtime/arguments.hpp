@@ -65,6 +65,8 @@ class CallArgs {
   // The directory of the file the call is written in: built-ins that read files (import) resolve
   // relative paths against it. The working directory when unknown.
   std::filesystem::path script_directory() const;
+  // Records a file a built-in reads as an input of the run (see SourceTable::add_input).
+  void note_input(const std::filesystem::path& path) const;
 
   // Checks names, count and kinds against `params`.
   Bound bind(const std::vector<Param>& params) const;

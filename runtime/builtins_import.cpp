@@ -77,6 +77,7 @@ Value import_(CallArgs& call) {
   const std::uintmax_t size = fs::is_regular_file(status) ? fs::file_size(path, ec) : 0;
   const auto mtime = fs::last_write_time(path, ec).time_since_epoch().count();
   const CacheKey key{fs::weakly_canonical(path, ec).string(), crease, size, mtime};
+  call.note_input(std::get<0>(key));
 
   CachedMesh mesh;
   {

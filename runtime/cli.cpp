@@ -245,6 +245,8 @@ int run_cli(int argc, const char* const argv[], std::istream& in, bool in_is_ter
         return kExitOk;
       case CliOptions::Mode::Demo:
         return run_demo(*options, out, err);
+      case CliOptions::Mode::Watch:
+        return run_watch(*options, out, err);
       case CliOptions::Mode::Repl:
         return run_repl(*options, in, in_is_terminal, out, err);
       case CliOptions::Mode::Render:

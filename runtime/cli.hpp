@@ -23,7 +23,7 @@ enum ExitCode : int {
 };
 
 struct CliOptions {
-  enum class Mode { Render, Check, Demo, Repl, Help, Version } mode = Mode::Render;
+  enum class Mode { Render, Check, Watch, Demo, Repl, Help, Version } mode = Mode::Render;
   std::string script;
   std::optional<std::string> output;  // -o
   std::optional<std::string> camera;
@@ -32,9 +32,9 @@ struct CliOptions {
   std::optional<bool> hidden;
   unsigned jobs = 0;  // --jobs: threads for frames and the work inside them; 0: one per core
   bool stats = false;
-  bool verbose = false;  // --verbose: also the notes on what the script asked to accept
-  DeviceOptions device;  // --paper, --margin, --scale, --dpi, --plotter, --pen-order, ...
-  int demo_frames = 12;  // --demo --frames N
+  bool verbose = false;         // --verbose: also the notes on what the script asked to accept
+  DeviceOptions device;         // --paper, --margin, --scale, --dpi, --plotter, --pen-order, ...
+  int demo_frames = 12;         // --demo --frames N
   bool repl_requested = false;  // `hlrscript repl` / --repl: a REPL even when stdin is not a terminal
 };
 
@@ -50,7 +50,11 @@ int run_cli(int argc, const char* const argv[], std::ostream& out, std::ostream&
 
 // A loaded script through the whole run (frame 0, checks, the frame pipeline, reports), as for a file:
 // the REPL's :render and scripts read from standard input.
-int run_loaded_program(const Program& program, const CliOptions& options, std::ostream& out, std::ostream& err);
+int run_loaded_program(const Program& program, const CliOptions& options, std::ostream& out,
+                       std::ostream& err);
+
+// hlrscript watch FILE (runtime/watch.cpp): renders whenever an input changes; never returns.
+int run_watch(const CliOptions& options, std::ostream& out, std::ostream& err);
 
 // The REPL (runtime/repl.cpp): a terminal session, a transcript from a pipe when asked for by name, else
 // standard input as a script.

@@ -172,6 +172,7 @@ std::string usage_text() {
        "                          [--paper SIZE] [--portrait] [--margin MM] [--scale MM] [--dpi N]\n"
        "                          [--plotter NAME] [--clip] [--pen-order none|greedy|optimized]\n"
        "       hlrscript check FILE.hls [--camera NAME] [--frames A-B] [--shard K/N]\n"
+       "       hlrscript watch FILE.hls [-o OUT] [options]   # render again whenever an input changes\n"
        "       hlrscript --demo [-o OUT.pdf] [--frames N] [--hidden off|dashed]\n"
        "       hlrscript [repl [FILE]]             # the REPL; with a pipe on stdin: the script it carries\n"
        "       hlrscript --help | --version\n"
@@ -212,8 +213,8 @@ std::optional<CliOptions> parse_cli(int argc, const char* const argv[], std::ost
   if (o.mode == CliOptions::Mode::Demo) {
     if (!args.empty()) return usage_error(err, "--demo takes no script ('" + args.front() + "')");
   } else {
-    if (!args.empty() && args.front() == "check") {
-      o.mode = CliOptions::Mode::Check;
+    if (!args.empty() && (args.front() == "check" || args.front() == "watch")) {
+      o.mode = args.front() == "check" ? CliOptions::Mode::Check : CliOptions::Mode::Watch;
       args.erase(args.begin());
     } else if ((!args.empty() && args.front() == "repl") || vm.count("repl")) {
       o.mode = CliOptions::Mode::Repl;
@@ -224,6 +225,8 @@ std::optional<CliOptions> parse_cli(int argc, const char* const argv[], std::ost
     }
     if (args.empty() && o.mode == CliOptions::Mode::Check)
       return usage_error(err, "check needs a script: hlrscript check FILE.hls");
+    if (args.empty() && o.mode == CliOptions::Mode::Watch)
+      return usage_error(err, "watch needs a script: hlrscript watch FILE.hls [-o OUT]");
     if (args.size() > 1)
       return usage_error(err, "one script at a time (got '" + args[0] + "' and '" + args[1] + "')");
     if (!args.empty()) o.script = args.front();

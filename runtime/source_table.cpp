@@ -1,5 +1,6 @@
 #include "runtime/source_table.hpp"
 
+#include <algorithm>
 #include <cerrno>
 #include <cstring>
 #include <fstream>
@@ -84,7 +85,13 @@ std::vector<fs::path> SourceTable::paths() const {
   std::lock_guard lock(mutex_);
   std::vector<fs::path> out;
   for (const SourceEntry& e : entries_) out.push_back(e.path);
+  out.insert(out.end(), inputs_.begin(), inputs_.end());
   return out;
+}
+
+void SourceTable::add_input(const fs::path& path) const {
+  std::lock_guard lock(mutex_);
+  if (std::find(inputs_.begin(), inputs_.end(), path) == inputs_.end()) inputs_.push_back(path);
 }
 
 std::string format_diagnostic(const lang::Diagnostic& diagnostic, const SourceTable& sources) {

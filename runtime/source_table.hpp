@@ -38,8 +38,11 @@ class SourceTable {
 
   const SourceEntry* entry(lang::FileId id) const;
   const lang::SourceFile* file(lang::FileId id) const;
-  // The paths of every file read so far (an output must not overwrite any of them).
+  // The paths of every file read so far, scripts and imported meshes (an output must not overwrite any
+  // of them; watch mode re-renders when one changes).
   std::vector<std::filesystem::path> paths() const;
+  // A file read by a built-in (import): one more input of the run.
+  void add_input(const std::filesystem::path& path) const;
 
  private:
   const SourceEntry* add(std::filesystem::path path, const std::string& display_name,
@@ -48,6 +51,7 @@ class SourceTable {
   mutable std::mutex mutex_;
   std::deque<SourceEntry> entries_;  // index = FileId
   std::map<std::filesystem::path, lang::FileId> by_path_;
+  mutable std::vector<std::filesystem::path> inputs_;  // imported files, each once
 };
 
 // Prints diagnostics, each with its own file's line and caret, notes included (their spans may point

@@ -34,6 +34,11 @@ TEST(Import, ReadsAMeshRelativeToTheScript) {
   double min_x = 1e9;
   for (const Point3& p : cube.vertices) min_x = std::min(min_x, p.x);
   EXPECT_DOUBLE_EQ(min_x, 2.0);
+  // The mesh is an input of the run: no output may overwrite it, and watch mode follows it.
+  const std::vector<std::filesystem::path> inputs = program->sources().paths();
+  EXPECT_NE(std::find(inputs.begin(), inputs.end(),
+                      std::filesystem::weakly_canonical(dir.path() / "parts/cube.off")),
+            inputs.end());
 }
 
 TEST(Import, RepairsAreWarningsAtThePath) {
