@@ -2,6 +2,7 @@
 // core/camera. A CameraError names the parameter; it is reported at that argument.
 #include <stdexcept>
 
+#include "core/camera/camera_adjust.hpp"
 #include "core/camera/camera_error.hpp"
 #include "core/camera/desens_camera.hpp"
 #include "core/camera/lookat_camera.hpp"
@@ -100,6 +101,23 @@ Value desens_(CallArgs& call) {
   return make_camera(b, params, [&] { return desens_camera(p); });
 }
 
+// adjust(camera, theta:, phi:, zoom:, dolly:, pivot:): Albers' keys for any camera (the REPL's :orbit,
+// :zoom and :dolly save as this).
+Value adjust_(CallArgs& call) {
+  static const std::vector<Param> params = {
+      required("camera", kinds(ValueKind::Camera)), optional("theta", kNumber, Value::number(0)),
+      optional("phi", kNumber, Value::number(0)),   optional("zoom", kNumber, Value::number(1)),
+      optional("dolly", kNumber, Value::number(0)), optional("pivot", kVector, Value::vector({0, 0, 0}))};
+  const Bound b = call.bind(params);
+  CameraAdjustment a;
+  a.theta_deg = b.number(1);
+  a.phi_deg = b.number(2);
+  a.zoom = b.number(3);
+  a.dolly = b.number(4);
+  a.pivot = b.point(5);
+  return make_camera(b, params, [&] { return adjusted_camera(b.value(0).as_camera(), a); });
+}
+
 const BuiltinEntry kCameraBuiltins[] = {
     {"lookat", "lookat(eye:, target:, up: (0, 0, 1), fov: 40, aspect:, near:)", lookat_},
     {"ortho", "ortho(eye:, target:, up: (0, 0, 1), height:, aspect:)", ortho_},
@@ -108,6 +126,7 @@ const BuiltinEntry kCameraBuiltins[] = {
      "desens(object:, attitude: (0, 0, 0), observer:, heading: (0, 0, 0), focal: 1.5, scale: 0.5, "
      "offset: [0, 0], thesis_pi: false)",
      desens_},
+    {"adjust", "adjust(camera, theta: 0, phi: 0, zoom: 1, dolly: 0, pivot: (0, 0, 0))", adjust_},
 };
 
 }  // namespace

@@ -44,6 +44,10 @@ const Command kCommands[] = {
     {"show", ":show", "draw the current frame in the terminal"},
     {"render", ":render [FILE]", "write the session's frames to FILE (.pdf .svg .png .hpgl .steps .json)"},
     {"camera", ":camera [NAME]", "draw with camera NAME (no name: the last declared)"},
+    {"orbit", ":orbit DTHETA [DPHI]",
+     "step the camera round the scene (degrees; Albers' theta and phi keys)"},
+    {"zoom", ":zoom F", "magnify the picture F times"},
+    {"dolly", ":dolly D", "move the eye D scene units forward along the view"},
     {"frame", ":frame N", "look at frame N of the animation"},
     {"hidden", ":hidden on|off", "draw hidden lines dashed, or not"},
     {"stats", ":stats", "faces, edges, visible pieces, pen plan, render time of the current frame"},
@@ -279,7 +283,7 @@ ReplReply ReplSession::evaluate_expression(const std::string& text) {
 }
 
 std::optional<ReplSession::View> ReplSession::view(std::string& message) const {
-  const auto program = session_program(join(chunks_), loaded_);
+  const auto program = session_program(view_text(chunks_), loaded_);
   View v;
   try {
     v.scene = evaluate_frame(*program, frame_);
@@ -289,7 +293,7 @@ std::optional<ReplSession::View> ReplSession::view(std::string& message) const {
           "hint: camera main = lookat(eye: (30, 20, 15), target: (0, 0, 0))\n";
       return std::nullopt;
     }
-    const NamedCamera& c = choose_camera(v.scene, camera_, "the session");
+    const NamedCamera& c = choose_camera(v.scene, drawn_camera(), "the session");
     v.camera = c.name;
     v.view_camera = c.camera;
     HlrOptions o;
@@ -381,7 +385,7 @@ std::string ReplSession::script() const {
     }
   }
   if (hidden_) tail += *hidden_ ? "style hidden dashed\n" : "style hidden off\n";
-  return "# Saved from an hlrscript session.\n" + join(chunks) + tail;
+  return "# Saved from an hlrscript session.\n" + view_text(chunks) + tail;
 }
 
 ReplReply ReplSession::save(const std::string& file) {
@@ -401,11 +405,11 @@ ReplReply ReplSession::save(const std::string& file) {
 }
 
 ReplReply ReplSession::render(const std::string& file) {
-  const auto program = session_program(join(chunks_), loaded_);
+  const auto program = session_program(view_text(chunks_), loaded_);
   CliOptions o;
   o.script = "<session>";
   if (!file.empty()) o.output = file;
-  o.camera = camera_;
+  o.camera = drawn_camera();
   o.hidden = hidden_;
   std::ostringstream out, err;
   const int code = run_loaded_program(*program, o, out, err);
@@ -475,6 +479,7 @@ ReplReply ReplSession::command(const std::string& line) {
     undo_.pop_back();
     return done("undone; the session has " + std::to_string(chunks_.size()) + " inputs\n");
   }
+  if (cmd == "orbit" || cmd == "zoom" || cmd == "dolly") return step_camera(cmd, arg);
   if (cmd == "hidden") {
     if (arg != "on" && arg != "off") return error(":hidden needs on or off");
     hidden_ = arg == "on";
@@ -483,13 +488,17 @@ ReplReply ReplSession::command(const std::string& line) {
   if (cmd == "camera") {
     if (arg.empty()) {
       camera_.reset();
+      step_.reset();
       return done("drawing with the last camera declared\n");
     }
     const std::optional<std::string> before = camera_;
+    const std::optional<CameraAdjustment> stepped = step_;
     camera_ = arg;
+    step_.reset();  // a camera chosen anew starts where its statement puts it
     std::string message;
     if (!view(message)) {
       camera_ = before;
+      step_ = stepped;
       return error(message);
     }
     return done("drawing with camera " + arg + "\n");
@@ -506,6 +515,76 @@ ReplReply ReplSession::command(const std::string& line) {
     return r;
   }
   return error("unknown command");
+}
+
+std::optional<std::string> ReplSession::drawn_camera() const {
+  if (step_) return stepped_name_;
+  return camera_;
+}
+
+std::string ReplSession::view_text(const std::vector<Chunk>& chunks) const {
+  std::string text = join(chunks);
+  if (!step_) return text;
+  // The expression of the camera being stepped: the chosen one, else the last declared.
+  for (auto chunk = chunks.rbegin(); chunk != chunks.rend(); ++chunk) {
+    const lang::ParseResult parsed = lang::parse(chunk->text, "<input>");
+    if (!parsed.ok()) continue;
+    for (auto stmt = parsed.script->statements.rbegin(); stmt != parsed.script->statements.rend(); ++stmt) {
+      const auto* camera = std::get_if<lang::CameraStmt>(&stmt->node);
+      if (!camera || (camera_ && camera->name.text != *camera_)) continue;
+      const lang::SourceSpan& span = camera->value->span;
+      const std::string expr = chunk->text.substr(span.begin.offset, span.end.offset - span.begin.offset);
+      const CameraAdjustment& a = *step_;
+      return text + "camera " + stepped_name_ + " = adjust(" + expr +
+             ", theta: " + format_number(a.theta_deg) + ", phi: " + format_number(a.phi_deg) +
+             ", zoom: " + format_number(a.zoom) + ", dolly: " + format_number(a.dolly) +
+             ", pivot: " + point_text(a.pivot) + ")\n";
+    }
+  }
+  return text;
+}
+
+ReplReply ReplSession::step_camera(const std::string& cmd, const std::string& arguments) {
+  std::istringstream in(arguments);
+  double x = 0, y = 0;
+  const bool has_x = static_cast<bool>(in >> x);
+  const bool has_y = static_cast<bool>(in >> y);
+  std::string rest;
+  in.clear();
+  in >> rest;
+  if (!has_x || !rest.empty() || (cmd != "orbit" && has_y))
+    return error(cmd == "orbit"
+                     ? ":orbit needs degrees: :orbit 15 or :orbit 15 -10"
+                     : ":" + cmd + " needs a number, as in :" + cmd + (cmd == "zoom" ? " 1.5" : " 2"));
+  if (cmd == "zoom" && !(x > 0)) return error(":zoom needs a positive factor");
+  const std::optional<CameraAdjustment> before = step_;
+  if (!step_) {
+    // Pivot: the middle of what is drawn in the current frame, fixed from now on.
+    std::string message;
+    const std::optional<View> v = view(message);
+    if (!v) return error(message);
+    Point3 lo{1e300, 1e300, 1e300}, hi{-1e300, -1e300, -1e300};
+    for (const SceneObject& o : v->scene.scene.objects)
+      for (const Point3& p : o.solid->vertices) {
+        lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
+        hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
+      }
+    CameraAdjustment a;
+    if (lo.x <= hi.x) a.pivot = {(lo.x + hi.x) / 2, (lo.y + hi.y) / 2, (lo.z + hi.z) / 2};
+    step_ = a;
+    stepped_name_ = v->camera + "_view";
+  }
+  if (cmd == "orbit") {
+    step_->theta_deg += x;
+    step_->phi_deg += has_y ? y : 0;
+  } else if (cmd == "zoom") {
+    step_->zoom *= x;
+  } else {
+    step_->dolly += x;
+  }
+  const ReplReply shown = show();
+  if (shown.kind == ReplReply::Kind::Error) step_ = before;
+  return shown;
 }
 
 std::vector<std::string> ReplSession::completions(const std::string& line, const std::string& word) const {

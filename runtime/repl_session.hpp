@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "core/camera/camera_adjust.hpp"
 #include "runtime/terminal_picture.hpp"
 
 namespace hlr::runtime {
@@ -58,7 +59,12 @@ class ReplSession {
   ReplReply scene();
   ReplReply render(const std::string& file);
   ReplReply save(const std::string& file);
+  ReplReply step_camera(const std::string& command, const std::string& arguments);
   std::string join(const std::vector<Chunk>& chunks) const;
+  // The session as drawn: its statements, and the stepped camera (:orbit, :zoom, :dolly) when there is
+  // one, declared last as adjust(<the camera's expression>, ...).
+  std::string view_text(const std::vector<Chunk>& chunks) const;
+  std::optional<std::string> drawn_camera() const;  // the name to draw with, when not the last declared
   std::optional<View> view(std::string& error) const;
 
   TerminalSize size_;
@@ -68,6 +74,8 @@ class ReplSession {
   int frame_ = 0;
   std::optional<bool> hidden_;                   // :hidden on|off
   std::optional<std::string> camera_;            // :camera NAME
+  std::optional<CameraAdjustment> step_;         // :orbit, :zoom, :dolly since the camera was chosen
+  std::string stepped_name_;                     // the adjusted camera's name in view_text()
   std::optional<std::filesystem::path> loaded_;  // for :reload
 };
 

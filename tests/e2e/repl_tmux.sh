@@ -46,6 +46,8 @@ keys ':sh' Tab Enter
 expect "camera c, frame 0: 9 visible pieces"
 # The picture has the cube's outline: vertical edges drawn in braille (a full left or right dot column).
 screen | grep -qF -e '⡇' -e '⢸' || { echo "no braille picture"; screen; exit 1; }
+keys ':orbit 30 10' Enter
+expect "camera c_view, frame 0"
 keys ':save saved.hls' Enter
 expect "saved 3 inputs to saved.hls"
 keys C-d

@@ -183,6 +183,35 @@ TEST_F(ReplFiles, SaveWritesAScriptThatRendersTheSameDrawing) {
             "loaded " + saved.string() + ": 2 objects, 12 faces, 2 cameras\n");
 }
 
+TEST_F(ReplFiles, OrbitZoomAndDollyChangeThePictureAndSaveAsAdjust) {
+  ReplSession s(TerminalSize{40, 22});
+  feed_all(s, {"draw box(3, 2, 1)", "camera c = lookat(eye: (10, -6, 5), target: (1.5, 1, 0.5))"});
+  const std::string before = s.feed(":show").text;
+  const ReplReply orbited = s.feed(":orbit 60 15");
+  ASSERT_EQ(orbited.kind, ReplReply::Kind::Done) << orbited.text;
+  EXPECT_NE(orbited.text, before);  // the picture moved
+  EXPECT_NE(orbited.text.find("camera c_view, frame 0"), std::string::npos) << orbited.text;
+  EXPECT_EQ(s.feed(":zoom 2").kind, ReplReply::Kind::Done);
+  EXPECT_EQ(s.feed(":dolly 1.5").kind, ReplReply::Kind::Done);
+  EXPECT_EQ(s.feed(":zoom -1").kind, ReplReply::Kind::Error);
+  EXPECT_EQ(s.feed(":orbit left").kind, ReplReply::Kind::Error);
+  // Saved as the camera's own expression, adjusted about the middle of the box.
+  EXPECT_NE(
+      s.script().find("camera c_view = adjust(lookat(eye: (10, -6, 5), target: (1.5, 1, 0.5)), theta: 60, "
+                      "phi: 15, zoom: 2, dolly: 1.5, pivot: (1.5, 1, 0.5))"),
+      std::string::npos)
+      << s.script();
+  const fs::path saved = dir_ / "orbit.hls";
+  s.feed(":save " + saved.string());
+  EXPECT_EQ(s.feed(":render " + (dir_ / "session.json").string()).kind, ReplReply::Kind::Done);
+  ASSERT_EQ(test::run({saved.string(), "-o", (dir_ / "file.json").string()}).code, 0);
+  EXPECT_EQ(without_title(test::read_text(dir_ / "session.json")),
+            without_title(test::read_text(dir_ / "file.json")));
+  // Choosing a camera again starts from its statement.
+  EXPECT_EQ(s.feed(":camera c").kind, ReplReply::Kind::Done);
+  EXPECT_EQ(s.feed(":show").text, before);
+}
+
 TEST_F(ReplFiles, StandardInputIsAScriptWhenNoReplIsAskedFor) {
   const test::CliResult ok =
       test::run_with_input({"-o", (dir_ / "piped.json").string()}, "camera c = orbit()\ndraw cube(1)\n");
