@@ -148,6 +148,7 @@ Evaluator::Flow Evaluator::exec_if(const lang::IfStmt& branch, const ScopePtr& s
 }
 
 void Evaluator::exec_draw(const lang::DrawStmt& draw, const ScopePtr& scope) {
+  if (!out_.first_draw) out_.first_draw = draw.object->span;
   const Value object = eval(*draw.object, scope);
   Affine3 at;
   if (draw.transform) {

@@ -36,15 +36,16 @@ struct AnimationSetting {  // animate frames N fps F
   lang::SourceSpan span;
 };
 
-struct OutputSetting {        // output "pattern" [paper ...] [plotter NAME]
-  std::string name;           // the pattern evaluated for this frame
-  bool interpolated = false;  // the pattern has {...}: each frame may name its own file
-  lang::SourceSpan span;      // the pattern string
+struct OutputSetting {                 // output "pattern" [paper ...] [plotter NAME]
+  std::string name;                    // the pattern evaluated for this frame
+  bool interpolated = false;           // the pattern has {...}: each frame may name its own file
+  lang::SourceSpan span;               // the pattern string
   std::optional<std::string> plotter;  // a declared plotter's or a built-in profile's name
   std::optional<lang::SourceSpan> plotter_span;
 };
 
-struct PaperSetting {  // paper A4 landscape [(margin: MM, scale: MM_PER_UNIT)], paper custom (width:, height:)
+struct PaperSetting {  // paper A4 landscape [(margin: MM, scale: MM_PER_UNIT)], paper custom (width:,
+                       // height:)
   std::string size;    // as written
   Paper paper;
   std::optional<double> margin_mm;
@@ -73,10 +74,11 @@ struct FrameScene {
   std::optional<PaperSetting> paper;
   std::optional<bool> hidden;  // style hidden dashed (true) | off (false)
   std::optional<lang::SourceSpan> hidden_span;
-  std::optional<int> hidden_pen;  // style hidden dashed pen N
-  std::vector<int> object_pens;   // by scene object: draw ... pen N (default 1)
-  std::vector<PenSetting> pens;   // pen statements, each pen number at most once
-  std::vector<PlotterSetting> plotters;  // declared plotters, names unique
+  std::optional<int> hidden_pen;               // style hidden dashed pen N
+  std::vector<int> object_pens;                // by scene object: draw ... pen N (default 1)
+  std::optional<lang::SourceSpan> first_draw;  // what the first draw statement draws
+  std::vector<PenSetting> pens;                // pen statements, each pen number at most once
+  std::vector<PlotterSetting> plotters;        // declared plotters, names unique
   std::vector<lang::Diagnostic> warnings;
   std::uint64_t steps = 0;
   std::size_t faces_built = 0;

@@ -133,9 +133,14 @@ std::shared_ptr<const Device> device_for(DeviceKind kind, const FrameScene& scen
 
 const NamedCamera& choose_camera(const FrameScene& scene, const std::optional<std::string>& wanted,
                                  const std::string& script_name) {
-  if (scene.cameras.empty())
-    throw RunError(script_name + ": the script declares no camera",
-                   "add one, for example: camera main = lookat(eye: (30, 20, 15), target: (0, 0, 0))", 65);
+  if (scene.cameras.empty()) {
+    const std::string hint =
+        "add one, for example: camera main = lookat(eye: (30, 20, 15), target: (0, 0, 0))";
+    // At what is drawn, when something is: that is what the camera is missing for.
+    if (scene.first_draw)
+      fail(*scene.first_draw, "the script draws this but declares no camera to look at it", hint);
+    throw RunError(script_name + ": the script declares no camera", hint, 65);
+  }
   if (!wanted) return scene.cameras.back();
   for (const NamedCamera& c : scene.cameras)
     if (c.name == *wanted) return c;

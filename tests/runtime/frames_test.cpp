@@ -65,7 +65,15 @@ TEST(Frames, CameraChoice) {
     EXPECT_EQ(e.hint, "its cameras: side, top");
   }
   try {
-    choose_camera(test::run_ok("draw cube(1)"), std::nullopt, "a.hls");
+    choose_camera(test::run_ok("let s = 2\ndraw cube(s)"), std::nullopt, "a.hls");
+    FAIL();
+  } catch (const EvalError& e) {  // at what is drawn
+    EXPECT_EQ(test::line_col(e.diagnostics.front()),
+              "2:6: the script draws this but declares no camera to look at it");
+    EXPECT_NE(e.diagnostics.front().hint.find("camera main = lookat("), std::string::npos);
+  }
+  try {
+    choose_camera(test::run_ok("let s = 2"), std::nullopt, "a.hls");  // nothing drawn either
     FAIL();
   } catch (const RunError& e) {
     EXPECT_EQ(e.exit_code, 65);
