@@ -15,6 +15,10 @@ inline constexpr double kMaxPenWidthMm = 10;
 // The largest sheet side (10 m: far beyond any plotter, well inside cairo's coordinate range).
 inline constexpr double kMaxPaperSideMm = 10000;
 
+// Millimetres per picture unit of an explicit scale (--scale): far past any drawing either way.
+inline constexpr double kMinMmPerUnit = 1e-9;
+inline constexpr double kMaxMmPerUnit = 1e9;
+
 // ---- HPGL plotters
 // VS velocity in cm/s, the range core/device/hpgl_device.hpp documents. A plotter clamps a VS above its
 // own top speed (38.1 cm/s on the HP 7475A, 80 on the 7550A), so the cap only rejects nonsense.

@@ -81,7 +81,8 @@ Value clamp_(CallArgs& call) {
                                             required("hi", kNumber)};
   const Bound b = call.bind(params);
   if (b.number(1) > b.number(2))
-    b.fail(2, "must not be below lo (" + format_for_message(b.number(1)) + "), got " + format_for_message(b.number(2)));
+    b.fail(2, "must not be below lo (" + format_for_message(b.number(1)) + "), got " +
+                  format_for_message(b.number(2)));
   return Value::number(std::clamp(b.number(0), b.number(1), b.number(2)));
 }
 

@@ -111,7 +111,8 @@ Value torus_(CallArgs& call) {
                                             optional("minor", kNumber, Value::number(24)), crease_param()};
   const Bound b = call.bind(params);
   const double big = b.positive(0), small = b.positive(1);
-  if (!(small < big)) b.fail(1, "must be below R (" + format_for_message(big) + "), got " + format_for_message(small));
+  if (!(small < big))
+    b.fail(1, "must be below R (" + format_for_message(big) + "), got " + format_for_message(small));
   const int major = b.whole(2, 3, kMaxCount), minor = b.whole(3, 3, kMaxCount);
   const double deg = crease_angle(b, 4);
   return generated_solid(call, static_cast<std::size_t>(major) * static_cast<std::size_t>(minor), [&] {

@@ -190,22 +190,6 @@ int run_program(const Program& program, const CliOptions& o, std::ostream& out, 
   }
 }
 
-int run_script(const CliOptions& o, std::ostream& out, std::ostream& err) {
-  const auto start = Clock::now();
-  std::unique_ptr<Program> program;
-  try {
-    program = Program::load(o.script, o.script);
-  } catch (const EvalError& e) {
-    err << "hlrscript: error: " << e.what() << "\n";
-    return kExitInput;
-  }
-  if (!program->parsed()) {
-    print_diagnostics(err, program->syntax_errors(), program->sources());
-    return kExitScript;
-  }
-  return run_program(*program, o, out, err, start);
-}
-
 // The demo is a built-in script (runtime/demo_script.cpp) on the normal path, to carrier.pdf unless -o.
 int run_demo(CliOptions o, std::ostream& out, std::ostream& err) {
   const auto start = Clock::now();
@@ -220,6 +204,25 @@ int run_demo(CliOptions o, std::ostream& out, std::ostream& err) {
 }
 
 }  // namespace
+
+int run_script(const CliOptions& o, std::ostream& out, std::ostream& err,
+               std::vector<std::filesystem::path>* inputs) {
+  const auto start = Clock::now();
+  std::unique_ptr<Program> program;
+  try {
+    program = Program::load(o.script, o.script);
+  } catch (const EvalError& e) {
+    err << "hlrscript: error: " << e.what() << "\n";
+    return kExitInput;
+  }
+  int code = kExitScript;
+  if (!program->parsed())
+    print_diagnostics(err, program->syntax_errors(), program->sources());
+  else
+    code = run_program(*program, o, out, err, start);
+  if (inputs) *inputs = program->sources().paths();
+  return code;
+}
 
 int run_loaded_program(const Program& program, const CliOptions& options, std::ostream& out,
                        std::ostream& err) {

@@ -2,6 +2,7 @@
 // the process: it writes to the given streams and returns the exit status, so tests can drive it.
 #pragma once
 
+#include <filesystem>
 #include <iosfwd>
 #include <optional>
 #include <string>
@@ -47,6 +48,11 @@ std::string usage_text();
 int run_cli(int argc, const char* const argv[], std::istream& in, bool in_is_terminal, std::ostream& out,
             std::ostream& err);
 int run_cli(int argc, const char* const argv[], std::ostream& out, std::ostream& err);
+
+// `hlrscript FILE` (options.script): load, then run_loaded_program. `inputs`, when given, receives the
+// files the run read (the script, its includes, imported meshes) — what watch mode follows.
+int run_script(const CliOptions& options, std::ostream& out, std::ostream& err,
+               std::vector<std::filesystem::path>* inputs = nullptr);
 
 // A loaded script through the whole run (frame 0, checks, the frame pipeline, reports), as for a file:
 // the REPL's :render and scripts read from standard input.

@@ -125,7 +125,7 @@ bool parse_device_options(const po::variables_map& vm, DeviceOptions& d, std::st
   }
   std::optional<double> dpi;
   if (!number_option(vm, "margin", 0, 1000, d.margin_mm, error) ||
-      !number_option(vm, "scale", 1e-9, 1e9, d.mm_per_unit, error) ||
+      !number_option(vm, "scale", kMinMmPerUnit, kMaxMmPerUnit, d.mm_per_unit, error) ||
       !number_option(vm, "dpi", 10, 2400, dpi, error) ||
       !number_option(vm, "line-width", 0.01, kMaxPenWidthMm, d.line_width_mm, error))
     return false;

@@ -172,12 +172,14 @@ void Evaluator::exec_draw(const lang::DrawStmt& draw, const ScopePtr& scope) {
       const double det = placed.worldFromObject.determinant();
       if (det == 0 || !std::isfinite(det))
         fail(span, "the transform is singular: it would flatten the solid");
+      // Checked when made: a cached placement was checked then.
       o.solid = SolidCache::shared().placed(placed.solid, placed.worldFromObject, [&] {
-        return std::make_shared<const Solid>(placed.solid->transformed(placed.worldFromObject));
+        auto moved = std::make_shared<const Solid>(placed.solid->transformed(placed.worldFromObject));
+        for (const Point3& p : moved->vertices)
+          if (!is_finite(p))
+            fail(span, "the transform moves a vertex beyond the largest number (about 1.8e308)");
+        return moved;
       });
-      for (const Point3& p : o.solid->vertices)
-        if (!is_finite(p))
-          fail(span, "the transform moves a vertex beyond the largest number (about 1.8e308)");
     }
     out_.scene.objects.push_back(std::move(o));
     out_.object_pens.push_back(pen);

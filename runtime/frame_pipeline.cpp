@@ -100,8 +100,7 @@ void run_frame(const Program& program, int frame, double fps, const PipelineOpti
 // A file being written beside its target, renamed into place by commit(); removed if never committed.
 class StagedFile {
  public:
-  StagedFile(OutputTarget target, std::shared_ptr<const Device> device)
-      : target_(std::move(target)), device_(std::move(device)) {
+  StagedFile(OutputTarget target, const Device& device) : target_(std::move(target)) {
     try {
       check_writable(target_);
     } catch (const DeviceError& e) {
@@ -109,7 +108,7 @@ class StagedFile {
     }
     temp_ = temporary_path_for(target_.path);
     try {
-      file_ = device_->open(temp_);
+      file_ = device.open(temp_);
     } catch (const DeviceError& e) {
       remove();
       throw OutputError("cannot write '" + target_.path.string() + "': " + e.what(), target_);
@@ -127,7 +126,6 @@ class StagedFile {
   void finish() {
     guard([&] { file_->finish(); });
     file_.reset();
-    device_.reset();
   }
   void commit() {
     std::error_code ec;
@@ -153,7 +151,6 @@ class StagedFile {
   }
 
   OutputTarget target_;
-  std::shared_ptr<const Device> device_;
   fs::path temp_;
   std::unique_ptr<DeviceFile> file_;
   bool committed_ = false;
@@ -202,7 +199,7 @@ class FrameSink {
       result_.files.push_back(job.target.path);
       first_frames_.push_back(frame);
       if (options_.write && options_.render)
-        files_.push_back(std::make_unique<StagedFile>(job.target, job.device));
+        files_.push_back(std::make_unique<StagedFile>(job.target, *job.device));
     } else if (one_frame_per_file(job.target.device)) {
       fail_several_frames(job.target, first_frames_[it->second], frame, options_.run.output.has_value());
     }

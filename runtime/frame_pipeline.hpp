@@ -56,7 +56,7 @@ struct FrameRecord {
 };
 
 struct PipelineResult {
-  std::vector<FrameRecord> frames;           // in the order of `frames` given; with keep_records
+  std::vector<FrameRecord> frames;                       // in the order of `frames` given; with keep_records
   std::size_t frame_count = 0, faces = 0, segments = 0;  // totals over every frame
   std::vector<std::filesystem::path> files;  // written (or that would be), in order of first frame
   std::vector<lang::Diagnostic> warnings;    // from every frame, each distinct one once

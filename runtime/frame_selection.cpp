@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <charconv>
 
-#include "runtime/run_error.hpp"
 #include "runtime/limits.hpp"
+#include "runtime/run_error.hpp"
 
 namespace hlr::runtime {
 

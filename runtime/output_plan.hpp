@@ -14,8 +14,8 @@
 #include "core/device/device.hpp"
 #include "core/plan/pen_plan.hpp"
 #include "runtime/frame_scene.hpp"
-#include "runtime/run_error.hpp"
 #include "runtime/program.hpp"
+#include "runtime/run_error.hpp"
 
 namespace hlr::runtime {
 

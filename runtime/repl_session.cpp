@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <exception>
 #include <fstream>
 #include <sstream>
 
@@ -93,18 +94,28 @@ std::string point_text(Point3 p) {
   return "(" + format_number(p.x) + ", " + format_number(p.y) + ", " + format_number(p.z) + ")";
 }
 
-// A value as the REPL shows it: solids by their size, everything else as str() prints it.
-std::string describe(const Value& v) {
-  if (v.is(ValueKind::Solid)) {
-    const Solid& s = *v.as_solid().solid;
-    Point3 lo{1e300, 1e300, 1e300}, hi{-1e300, -1e300, -1e300};
+// The box round solids' vertices.
+struct Extent {
+  Point3 lo{1e300, 1e300, 1e300}, hi{-1e300, -1e300, -1e300};
+  void add(const Solid& s) {
     for (const Point3& p : s.vertices) {
       lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
       hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
     }
+  }
+  bool empty() const { return lo.x > hi.x; }
+  Point3 middle() const { return {(lo.x + hi.x) / 2, (lo.y + hi.y) / 2, (lo.z + hi.z) / 2}; }
+};
+
+// A value as the REPL shows it: solids by their size, everything else as str() prints it.
+std::string describe(const Value& v) {
+  if (v.is(ValueKind::Solid)) {
+    const Solid& s = *v.as_solid().solid;
+    Extent e;
+    e.add(s);
     return "solid " + v.as_solid().name + ": " + std::to_string(s.faces.size()) + " faces, " +
            std::to_string(s.edges.size()) + " edges, " + std::to_string(s.vertices.size()) + " vertices, " +
-           (s.vertices.empty() ? "empty" : "bounds " + point_text(lo) + " to " + point_text(hi)) +
+           (e.empty() ? "empty" : "bounds " + point_text(e.lo) + " to " + point_text(e.hi)) +
            (s.closed ? ", closed" : ", open");
   }
   if (v.is(ValueKind::Group)) return "group of " + std::to_string(v.as_group().size()) + " solids";
@@ -223,31 +234,34 @@ ReplReply ReplSession::accept(const std::string& text) {
   }
   at_end.push_back(chunk);
   if (!placed) in_place = at_end;
-  std::vector<Chunk> next = in_place;
-  auto program = session_program(join(next), loaded_);
-  if (placed && program->parsed()) {
-    try {
-      (void)evaluate_frame(*program, frame_);
-    } catch (const std::exception&) {
-      auto other = session_program(join(at_end), loaded_);
-      bool works = other->parsed();
-      try {
-        if (works) (void)evaluate_frame(*other, frame_);
-      } catch (const std::exception&) {
-        works = false;
-      }
-      if (works) {
-        next = at_end;
-        program = std::move(other);
-      }
-    }
-  }
+  // One evaluation per arrangement tried: the values shown come from the one that works.
   std::string values;
-  try {
-    const FrameScene scene = evaluate_frame(*program, frame_, [&](const Evaluator& e) {
+  auto attempt = [&](const std::vector<Chunk>& chunks, std::unique_ptr<Program>& program) {
+    program = session_program(join(chunks), loaded_);
+    values.clear();
+    return evaluate_frame(*program, frame_, [&](const Evaluator& e) {
       for (const std::string& name : chunk.names)
         if (const Value* v = e.global(name)) values += name + " = " + describe(*v) + "\n";
     });
+  };
+  std::vector<Chunk> next = in_place;
+  std::unique_ptr<Program> program;  // the arrangement evaluated (its sources print the errors)
+  try {
+    FrameScene scene;
+    try {
+      scene = attempt(next, program);
+    } catch (const std::exception&) {
+      if (!placed) throw;
+      const std::exception_ptr in_place_error = std::current_exception();
+      std::unique_ptr<Program> other;
+      try {
+        scene = attempt(at_end, other);
+      } catch (const std::exception&) {
+        std::rethrow_exception(in_place_error);  // neither works: the in-place error says why
+      }
+      next = at_end;
+      program = std::move(other);
+    }
     std::string out = diagnostics_text(scene.warnings, *program) + replaced + values;
     for (const std::string& c : chunk.cameras) out += "camera " + c + "\n";
     if (text.find("draw") != std::string::npos) {
@@ -563,14 +577,10 @@ ReplReply ReplSession::step_camera(const std::string& cmd, const std::string& ar
     std::string message;
     const std::optional<View> v = view(message);
     if (!v) return error(message);
-    Point3 lo{1e300, 1e300, 1e300}, hi{-1e300, -1e300, -1e300};
-    for (const SceneObject& o : v->scene.scene.objects)
-      for (const Point3& p : o.solid->vertices) {
-        lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
-        hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
-      }
+    Extent e;
+    for (const SceneObject& o : v->scene.scene.objects) e.add(*o.solid);
     CameraAdjustment a;
-    if (lo.x <= hi.x) a.pivot = {(lo.x + hi.x) / 2, (lo.y + hi.y) / 2, (lo.z + hi.z) / 2};
+    if (!e.empty()) a.pivot = e.middle();
     step_ = a;
     stepped_name_ = v->camera + "_view";
   }

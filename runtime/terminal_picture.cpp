@@ -8,6 +8,8 @@
 #include <cstdint>
 #include <cstdlib>
 
+#include "core/tolerance.hpp"
+
 namespace hlr::runtime {
 
 TerminalSize terminal_size(int fd) {
@@ -53,7 +55,8 @@ std::string braille_picture(const std::vector<VisibleSegment>& segments, const s
     }
   }
   if (!box.empty()) {
-    const double bw = std::max(box.width(), 1e-300), bh = std::max(box.height(), 1e-300);
+    const double bw = std::max(box.width(), Tolerance::kFloor),
+                 bh = std::max(box.height(), Tolerance::kFloor);
     const double scale = std::min((width - 1) / bw, (height - 1) / bh);
     const double ox = (width - 1 - scale * bw) / 2, oy = (height - 1 - scale * bh) / 2;
     auto dot = [&](double x, double y) {  // picture (x right, y up) → a dot, y down

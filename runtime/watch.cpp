@@ -10,9 +10,6 @@
 #include <thread>
 
 #include "runtime/cli.hpp"
-#include "runtime/eval_error.hpp"
-#include "runtime/program.hpp"
-#include "runtime/source_table.hpp"
 
 namespace hlr::runtime {
 
@@ -34,20 +31,10 @@ Stamp stamp_of(const std::vector<fs::path>& files) {
 
 // One render, as `hlrscript FILE` does it; returns the files to watch (at least the script).
 std::vector<fs::path> render_once(const CliOptions& o, std::ostream& out, std::ostream& err) {
+  std::vector<fs::path> inputs;
+  run_script(o, out, err, &inputs);
   std::vector<fs::path> watched = {fs::absolute(o.script).lexically_normal()};
-  std::unique_ptr<Program> program;
-  try {
-    program = Program::load(o.script, o.script);
-  } catch (const EvalError& e) {
-    err << "hlrscript: error: " << e.what() << "\n";
-    return watched;
-  }
-  if (!program->parsed()) {
-    print_diagnostics(err, program->syntax_errors(), program->sources());
-  } else {
-    run_loaded_program(*program, o, out, err);
-  }
-  for (const fs::path& p : program->sources().paths())
+  for (const fs::path& p : inputs)
     if (std::find(watched.begin(), watched.end(), p) == watched.end()) watched.push_back(p);
   return watched;
 }
