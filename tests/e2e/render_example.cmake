@@ -106,8 +106,10 @@ if(NOT n EQUAL PAGES)
   message(FATAL_ERROR "${SCRIPT}: expected ${PAGES} HPGL file(s), got ${n}")
 endif()
 foreach(plot IN LISTS plots)
-  execute_process(COMMAND hp2xx -q -m png -f "${plot}.png" "${plot}" RESULT_VARIABLE rc OUTPUT_VARIABLE out
-                  ERROR_VARIABLE err)
+  # By name in its directory: hp2xx overflows a fixed buffer on long paths (a deep build directory).
+  get_filename_component(plot_name "${plot}" NAME)
+  execute_process(COMMAND hp2xx -q -m png -f "${plot_name}.png" "${plot_name}" WORKING_DIRECTORY "${dir}"
+                  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
   if(NOT rc EQUAL 0 OR NOT EXISTS "${plot}.png")
     message(FATAL_ERROR "hp2xx cannot render ${plot} (${rc}):\n${err}${out}")
   endif()
