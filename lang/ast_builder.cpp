@@ -93,7 +93,12 @@ struct action<g::paren_expr> {
     if (child_count(s) == 1) return;  // (e): the inner expression, as it is
     const std::size_t first = first_child(s);
     VectorLit vec;
-    for (std::size_t i = 0; i < 3; ++i) vec.components[i] = box(take<Expr>(s.items[first + i]));
+    const std::size_t given = child_count(s);  // (x, y) or (x, y, z)
+    for (std::size_t i = 0; i < given; ++i) vec.components[i] = box(take<Expr>(s.items[first + i]));
+    if (given == 2) {
+      // (x, y) is the point (x, y, 0): the third component is a 0 spanning the whole literal.
+      vec.components[2] = box(Expr{span_of(in, s), NumberLit{0, true}});
+    }
     replace_children(s, with_height(Expr{span_of(in, s), std::move(vec)}, s));
   }
 };

@@ -139,7 +139,9 @@ struct vector_second : seq< expression > {};
 struct vector_comma : one< ',' > {};
 struct vector_third : seq< expression > {};
 struct vector_close : one< ')' > {};
-struct vector_tail : seq< one< ',' >, sp, must< vector_second >, sp, must< vector_comma >, sp, must< vector_third >, sp, must< vector_close > > {};
+struct vector_end : one< ')' > {};  // (x, y): the point (x, y, 0)
+struct vector_tail : seq< one< ',' >, sp, must< vector_second >, sp,
+                          sor< seq< vector_comma, sp, must< vector_third >, sp, must< vector_close > >, must< vector_end > > > {};
 struct paren_first : seq< expression > {};
 struct paren_expr : seq< paren_open, sp, must< paren_first >, sp, sor< vector_tail, must< group_close > > > {};
 

@@ -42,9 +42,10 @@ HLR_ERROR(string_close, "unterminated string: add '\"' before the end of the lin
 // ---- expressions ----
 HLR_ERROR(paren_first, "expected an expression after '('");
 HLR_ERROR(group_close, "expected ')' or ','");
-HLR_HINT(group_close, "a parenthesised expression is '(a + b)', a vector '(x, y, z)'");
+HLR_HINT(group_close, "a parenthesised expression is '(a + b)', a vector '(x, y, z)', a point of the xy plane '(x, y)'");
 HLR_ERROR(vector_second, "expected the second component of the vector after ','");
-HLR_ERROR(vector_comma, "expected ',' and a third component: a vector has three components, as in '(x, y, z)'");
+HLR_ERROR(vector_end, "expected ')' or ',' and a third component after the vector's second component");
+HLR_HINT(vector_end, "(x, y) is the point (x, y, 0) of the xy plane, (x, y, z) a vector");
 HLR_ERROR(vector_third, "expected the third component of the vector after ','");
 HLR_ERROR(vector_close, "expected ')' after the third component: a vector has exactly three components");
 HLR_ERROR(list_next_item, "expected a list element after ','");
@@ -163,6 +164,7 @@ template <typename Rule>
 inline constexpr char closes = 0;
 template <> inline constexpr char closes<group_close> = '(';
 template <> inline constexpr char closes<vector_close> = '(';
+template <> inline constexpr char closes<vector_end> = '(';
 template <> inline constexpr char closes<call_close> = '(';
 template <> inline constexpr char closes<params_close> = '(';
 template <> inline constexpr char closes<solid_options_close> = '(';

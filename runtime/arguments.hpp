@@ -38,6 +38,8 @@ struct Param {
   bool required = true;
   Value fallback;  // an optional parameter's default; none means "absent"
 };
+using ParamList = std::vector<Param>;
+
 inline Param required(std::string_view name, KindSet accepted) { return {name, accepted, true, Value()}; }
 inline Param optional(std::string_view name, KindSet accepted, Value fallback = Value()) {
   return {name, accepted, false, std::move(fallback)};

@@ -7,8 +7,10 @@
 #include <string>
 #include <vector>
 
+#include "core/hlr/render_frame.hpp"
 #include "lang/source.hpp"
 #include "runtime/eval_error.hpp"
+#include "runtime/interrupt.hpp"
 #include "runtime/limits.hpp"
 
 namespace hlr::runtime {
@@ -20,6 +22,10 @@ class Budget {
     if (steps_ > kMaxSteps)
       fail(span, limit_message("evaluation steps in one frame", kMaxSteps),
            "is a loop or a recursion running away? Large lists and strings cost one step per item");
+    if (steps_ >= next_interrupt_check_) {
+      next_interrupt_check_ = steps_ + kInterruptCheckSteps;
+      if (interrupt_requested().load(std::memory_order_relaxed)) throw RenderCancelled();
+    }
   }
   // Faces of solids made (generators, `solid` statements); checked before the solid is built.
   void charge_faces_built(const lang::SourceSpan& span, std::size_t n) {
@@ -46,6 +52,7 @@ class Budget {
 
  private:
   std::uint64_t steps_ = 0;
+  std::uint64_t next_interrupt_check_ = 0;
   std::size_t built_ = 0;
   std::size_t drawn_ = 0;
   std::vector<lang::Diagnostic> warnings_;

@@ -1,5 +1,6 @@
 #include "runtime/builtins.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 #include <stdexcept>
@@ -14,7 +15,7 @@ namespace hlr::runtime {
 void BuiltinTable::add(const BuiltinEntry& entry) {
   auto f = std::make_shared<Function>();
   f->name = entry.name;
-  f->body = BuiltinFunction{entry.impl, entry.signature};
+  f->body = BuiltinFunction{entry.impl, entry.signature, entry.summary, entry.forms};
   entries_.insert_or_assign(entry.name, Value::function(std::move(f)));
 }
 
@@ -30,6 +31,7 @@ const Value* BuiltinTable::find(const std::string& name) const {
 std::vector<std::string> BuiltinTable::names() const {
   std::vector<std::string> out;
   for (const auto& e : entries_) out.push_back(e.first);
+  std::sort(out.begin(), out.end());
   return out;
 }
 

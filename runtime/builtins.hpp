@@ -19,6 +19,8 @@ struct BuiltinEntry {
   const char* name;
   const char* signature;  // every accepted form, shown in hints
   BuiltinImpl impl;
+  const char* summary;                  // what it gives, one sentence (:help, runtime/BUILTINS.md)
+  std::vector<const ParamList*> forms;  // the lists `impl` binds; empty only for variadic built-ins
 };
 
 class BuiltinTable {
@@ -31,7 +33,7 @@ class BuiltinTable {
   void add_constant(const std::string& name, Value value);
 
   const Value* find(const std::string& name) const;
-  std::vector<std::string> names() const;
+  std::vector<std::string> names() const;  // sorted
 
  private:
   std::unordered_map<std::string, Value> entries_;

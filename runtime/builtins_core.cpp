@@ -12,18 +12,20 @@ namespace {
 
 constexpr KindSet kNumber = kinds(ValueKind::Number);
 
+const ParamList kLenParams = {required("x", kinds(ValueKind::List, ValueKind::String))};
+
 Value len_(CallArgs& call) {
-  static const std::vector<Param> params = {required("x", kinds(ValueKind::List, ValueKind::String))};
-  const Bound b = call.bind(params);
+  const Bound b = call.bind(kLenParams);
   if (b.value(0).is(ValueKind::String))
     return Value::number(static_cast<double>(lang::count_code_points(b.value(0).as_string())));
   return Value::number(static_cast<double>(sequence_size(b.value(0))));
 }
 
+const ParamList kRangeParams = {required("a", kNumber), required("b", kNumber),
+                                optional("step", kNumber, Value::number(1))};
+
 Value range_(CallArgs& call) {
-  static const std::vector<Param> params = {required("a", kNumber), required("b", kNumber),
-                                            optional("step", kNumber, Value::number(1))};
-  const Bound b = call.bind(params);
+  const Bound b = call.bind(kRangeParams);
   const double start = b.number(0), stop = b.number(1), step = b.number(2);
   if (step == 0) b.fail(2, "must not be 0");
   const double count = std::ceil((stop - start) / step);
@@ -33,9 +35,10 @@ Value range_(CallArgs& call) {
   return Value::range({start, step, count > 0 ? static_cast<std::size_t>(count) : 0});
 }
 
+const ParamList kStrParams = {required("x", kAnyKind)};
+
 Value str_(CallArgs& call) {
-  static const std::vector<Param> params = {required("x", kAnyKind)};
-  const Bound b = call.bind(params);
+  const Bound b = call.bind(kStrParams);
   try {
     std::string text = display(b.value(0), kMaxStringLength);
     call.budget().step(call.site().span, text.size() / 16);
@@ -45,18 +48,20 @@ Value str_(CallArgs& call) {
   }
 }
 
+const ParamList kGroupParams = {required("list", kinds(ValueKind::List, ValueKind::Group))};
+
 Value group_(CallArgs& call) {
-  static const std::vector<Param> params = {required("list", kinds(ValueKind::List, ValueKind::Group))};
-  const Bound b = call.bind(params);
+  const Bound b = call.bind(kGroupParams);
   return Value::group(flatten_placed(b.value(0), Affine3::identity(), b.span(0), "group()", call.budget()));
 }
 
+const ParamList kPlaceParams = {
+    required("object", kinds(ValueKind::Solid, ValueKind::Group, ValueKind::List)),
+    required("transform", kinds(ValueKind::Transform))};
+
 // place(object, T): the object moved by T, as a group (so groups can hold placed parts).
 Value place_(CallArgs& call) {
-  static const std::vector<Param> params = {
-      required("object", kinds(ValueKind::Solid, ValueKind::Group, ValueKind::List)),
-      required("transform", kinds(ValueKind::Transform))};
-  const Bound b = call.bind(params);
+  const Bound b = call.bind(kPlaceParams);
   const Affine3& t = b.value(1).as_transform();
   const double det = t.determinant();
   if (det == 0 || !std::isfinite(det)) b.fail(1, "is singular: it would flatten the solid");
@@ -64,11 +69,27 @@ Value place_(CallArgs& call) {
 }
 
 const BuiltinEntry kCoreBuiltins[] = {
-    {"len", "len(list) | len(string)", len_},
-    {"range", "range(a, b, step: 1)", range_},
-    {"str", "str(x)", str_},
-    {"group", "group(list)", group_},
-    {"place", "place(object, transform)", place_},
+    {"len",
+     "len(x)  (x a list or a string)",
+     len_,
+     "The number of items in a list, or of characters (code points) in a string.",
+     {&kLenParams}},
+    {"range",
+     "range(a, b, step: 1)",
+     range_,
+     "The numbers from a towards b, b excluded, step apart, as a range.",
+     {&kRangeParams}},
+    {"str", "str(x)", str_, "Any value as text, as string interpolation shows it.", {&kStrParams}},
+    {"group",
+     "group(list)",
+     group_,
+     "The solids of a list or group, nested lists flattened, as one group.",
+     {&kGroupParams}},
+    {"place",
+     "place(object, transform)",
+     place_,
+     "A solid, group or list of them moved by a transform, as a group.",
+     {&kPlaceParams}},
 };
 
 }  // namespace

@@ -55,10 +55,11 @@ std::string problem_text(const stdlib::MeshProblem& p, const fs::path& resolved,
   throw EvalError(std::move(d), kind);
 }
 
+const ParamList kImportParams = {required("path", kinds(ValueKind::String)),
+                                 optional("crease", kinds(ValueKind::Number), Value::number(0))};
+
 Value import_(CallArgs& call) {
-  static const std::vector<Param> params = {required("path", kinds(ValueKind::String)),
-                                            optional("crease", kinds(ValueKind::Number), Value::number(0))};
-  const Bound b = call.bind(params);
+  const Bound b = call.bind(kImportParams);
   const std::string written = b.value(0).as_string();
   const double crease = b.number(1);
   if (!(crease >= 0 && crease <= 180))
@@ -117,7 +118,11 @@ Value import_(CallArgs& call) {
 }
 
 const BuiltinEntry kImportBuiltins[] = {
-    {"import", "import(path, crease: 0)", import_},
+    {"import",
+     "import(path, crease: 0)",
+     import_,
+     "A solid read from a mesh file (OFF, OBJ, STL, Albers' .VER/.SUR), its path relative to the script.",
+     {&kImportParams}},
 };
 
 }  // namespace

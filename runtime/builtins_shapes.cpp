@@ -48,27 +48,31 @@ std::vector<Point2> plane_points_arg(const Bound& b, std::size_t i, std::size_t 
   return out;
 }
 
+const ParamList kPyramidParams = {required("outline", kList), required("apex", kVector)};
+
 Value pyramid_(CallArgs& call) {
-  static const std::vector<Param> params = {required("outline", kList), required("apex", kVector)};
-  const Bound b = call.bind(params);
+  const Bound b = call.bind(kPyramidParams);
   const std::vector<Point3> outline = points_arg(b, 0, 3);
   const Point3 apex = b.point(1);
   return generated_solid(call, outline.size() + 1, [&] { return stdlib::pyramid(outline, apex); });
 }
 
+// Every Platonic solid binds this one list.
+const ParamList kPlatonicParams = {optional("r", kNumber, Value::number(1))};
+
 template <Solid (*Make)(double)>
 Value platonic_(CallArgs& call) {
-  static const std::vector<Param> params = {optional("r", kNumber, Value::number(1))};
-  const Bound b = call.bind(params);
+  const Bound b = call.bind(kPlatonicParams);
   const double r = b.positive(0);
   return generated_solid(call, 20, [&] { return Make(r); });
 }
 
+const ParamList kConeParams = {required("r", kNumber), required("h", kNumber),
+                               optional("top", kNumber, Value::number(0)),
+                               optional("sides", kNumber, Value::number(32)), crease_param()};
+
 Value cone_(CallArgs& call) {
-  static const std::vector<Param> params = {required("r", kNumber), required("h", kNumber),
-                                            optional("top", kNumber, Value::number(0)),
-                                            optional("sides", kNumber, Value::number(32)), crease_param()};
-  const Bound b = call.bind(params);
+  const Bound b = call.bind(kConeParams);
   const double r = b.non_negative(0), h = b.positive(1), top = b.non_negative(2);
   if (r == 0 && top == 0) b.fail(0, "and top cannot both be 0");
   const int sides = b.whole(3, 3, kMaxCount);
@@ -77,10 +81,11 @@ Value cone_(CallArgs& call) {
                          [&] { return stdlib::cone(r, h, top, sides, deg); });
 }
 
+const ParamList kExtrudeParams = {required("outline", kList), required("v", kVector),
+                                  optional("holes", kList, Value::list({}))};
+
 Value extrude_(CallArgs& call) {
-  static const std::vector<Param> params = {required("outline", kList), required("v", kVector),
-                                            optional("holes", kList, Value::list({}))};
-  const Bound b = call.bind(params);
+  const Bound b = call.bind(kExtrudeParams);
   const std::vector<Point3> outline = points_arg(b, 0, 3);
   const Vector3 v = b.vector(1);
   std::vector<std::vector<Point3>> holes;
@@ -92,11 +97,12 @@ Value extrude_(CallArgs& call) {
   return generated_solid(call, faces, [&] { return stdlib::extrude(outline, v, holes); });
 }
 
+const ParamList kRevolveParams = {required("profile", kList),
+                                  optional("segments", kNumber, Value::number(32)),
+                                  optional("angle", kNumber, Value::number(360)), crease_param()};
+
 Value revolve_(CallArgs& call) {
-  static const std::vector<Param> params = {required("profile", kList),
-                                            optional("segments", kNumber, Value::number(32)),
-                                            optional("angle", kNumber, Value::number(360)), crease_param()};
-  const Bound b = call.bind(params);
+  const Bound b = call.bind(kRevolveParams);
   const std::vector<Point2> profile = plane_points_arg(b, 0, 2, 1);
   const int segments = b.whole(1, 1, kMaxCount);
   const double angle = b.positive(2);
@@ -105,10 +111,10 @@ Value revolve_(CallArgs& call) {
   return generated_solid(call, faces, [&] { return stdlib::revolve(profile, segments, angle, deg); });
 }
 
+const ParamList kSweepParams = {required("profile", kList), required("path", kList), crease_param()};
+
 Value sweep_(CallArgs& call) {
-  static const std::vector<Param> params = {required("profile", kList), required("path", kList),
-                                            crease_param()};
-  const Bound b = call.bind(params);
+  const Bound b = call.bind(kSweepParams);
   const std::vector<Point2> profile = plane_points_arg(b, 0, 3, 2);
   const std::vector<Point3> path = points_arg(b, 1, 2);
   const double deg = crease_angle(b, 2);
@@ -116,11 +122,12 @@ Value sweep_(CallArgs& call) {
   return generated_solid(call, faces, [&] { return stdlib::sweep(profile, path, deg); });
 }
 
+const ParamList kHeightfieldParams = {required("values", kList), optional("dx", kNumber, Value::number(1)),
+                                      optional("dy", kNumber, Value::number(1)), optional("base", kNumber),
+                                      crease_param()};
+
 Value heightfield_(CallArgs& call) {
-  static const std::vector<Param> params = {
-      required("values", kList), optional("dx", kNumber, Value::number(1)),
-      optional("dy", kNumber, Value::number(1)), optional("base", kNumber), crease_param()};
-  const Bound b = call.bind(params);
+  const Bound b = call.bind(kHeightfieldParams);
   std::vector<std::vector<double>> rows;
   std::size_t cells = 0;
   for_each_sublist(call, b, 0, "values", "row", "a list of heights", [&](const Bound& one, std::size_t) {
@@ -134,17 +141,61 @@ Value heightfield_(CallArgs& call) {
 }
 
 const BuiltinEntry kShapeBuiltins[] = {
-    {"pyramid", "pyramid(outline, apex)", pyramid_},
-    {"tetrahedron", "tetrahedron(r: 1)", platonic_<stdlib::tetrahedron>},
-    {"hexahedron", "hexahedron(r: 1)", platonic_<stdlib::hexahedron>},
-    {"octahedron", "octahedron(r: 1)", platonic_<stdlib::octahedron>},
-    {"dodecahedron", "dodecahedron(r: 1)", platonic_<stdlib::dodecahedron>},
-    {"icosahedron", "icosahedron(r: 1)", platonic_<stdlib::icosahedron>},
-    {"cone", "cone(r, h, top: 0, sides: 32, crease: 30)", cone_},
-    {"extrude", "extrude(outline, v, holes: [])", extrude_},
-    {"revolve", "revolve(profile, segments: 32, angle: 360, crease: 30)", revolve_},
-    {"sweep", "sweep(profile, path, crease: 30)", sweep_},
-    {"heightfield", "heightfield(values, dx: 1, dy: 1, base: none, crease: 30)", heightfield_},
+    {"pyramid",
+     "pyramid(outline, apex)",
+     pyramid_,
+     "A pyramid over a planar outline of points with its tip at apex.",
+     {&kPyramidParams}},
+    {"tetrahedron",
+     "tetrahedron(r: 1)",
+     platonic_<stdlib::tetrahedron>,
+     "The regular tetrahedron of circumradius r centred on the origin.",
+     {&kPlatonicParams}},
+    {"hexahedron",
+     "hexahedron(r: 1)",
+     platonic_<stdlib::hexahedron>,
+     "The cube of circumradius r centred on the origin, axis-aligned.",
+     {&kPlatonicParams}},
+    {"octahedron",
+     "octahedron(r: 1)",
+     platonic_<stdlib::octahedron>,
+     "The regular octahedron of circumradius r centred on the origin, corners on the axes.",
+     {&kPlatonicParams}},
+    {"dodecahedron",
+     "dodecahedron(r: 1)",
+     platonic_<stdlib::dodecahedron>,
+     "The regular dodecahedron of circumradius r centred on the origin.",
+     {&kPlatonicParams}},
+    {"icosahedron",
+     "icosahedron(r: 1)",
+     platonic_<stdlib::icosahedron>,
+     "The regular icosahedron of circumradius r centred on the origin.",
+     {&kPlatonicParams}},
+    {"cone",
+     "cone(r, h, top: 0, sides: 32, crease: 30)",
+     cone_,
+     "A cone of base radius r and height h on the origin, or a frustum when the top radius is not 0.",
+     {&kConeParams}},
+    {"extrude",
+     "extrude(outline, v, holes: [])",
+     extrude_,
+     "A planar outline of points, with optional holes, swept along the vector v.",
+     {&kExtrudeParams}},
+    {"revolve",
+     "revolve(profile, segments: 32, angle: 360, crease: 30)",
+     revolve_,
+     "A profile of (r, 0, z) points turned about the z axis by angle degrees in segments steps.",
+     {&kRevolveParams}},
+    {"sweep",
+     "sweep(profile, path, crease: 30)",
+     sweep_,
+     "An xy-plane profile swept along a polyline path with mitred joints.",
+     {&kSweepParams}},
+    {"heightfield",
+     "heightfield(values, dx: 1, dy: 1, base: none, crease: 30)",
+     heightfield_,
+     "A terrain from rows of heights on a dx by dy grid: a surface, or a closed block down to base.",
+     {&kHeightfieldParams}},
 };
 
 }  // namespace

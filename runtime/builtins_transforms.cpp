@@ -36,27 +36,31 @@ Value checked(const CallArgs& call, const Affine3& a) {
   return Value::transform(a);
 }
 
+const ParamList kIdentityParams = {};
+
 Value identity_(CallArgs& call) {
-  call.bind({});
+  call.bind(kIdentityParams);
   return Value::transform(Affine3::identity());
 }
 
+const ParamList kTranslateXyzParams = {required("x", kNumber), required("y", kNumber),
+                                       required("z", kNumber)};
+const ParamList kTranslateVectorParams = {required("v", kVector)};
+
 Value translate_(CallArgs& call) {
-  if (call.args().size() == 1 && (call.args()[0].value.is(ValueKind::Vector) || call.has_label("v"))) {
-    static const std::vector<Param> params = {required("v", kVector)};
-    return checked(call, Affine3::translation(call.bind(params).vector(0)));
-  }
-  static const std::vector<Param> params = {required("x", kNumber), required("y", kNumber),
-                                            required("z", kNumber)};
-  const Bound b = call.bind(params);
+  if (call.args().size() == 1 && (call.args()[0].value.is(ValueKind::Vector) || call.has_label("v")))
+    return checked(call, Affine3::translation(call.bind(kTranslateVectorParams).vector(0)));
+  const Bound b = call.bind(kTranslateXyzParams);
   return checked(call, Affine3::translation({b.number(0), b.number(1), b.number(2)}));
 }
 
+// One list for every form: which of its parameters are given picks the form.
+const ParamList kRotateParams = {optional("degrees", kNumber), optional("axis", kVector),
+                                 optional("x", kNumber),       optional("y", kNumber),
+                                 optional("z", kNumber),       optional("about", kVector, Value::vector({}))};
+
 Value rotate_(CallArgs& call) {
-  static const std::vector<Param> params = {
-      optional("degrees", kNumber), optional("axis", kVector), optional("x", kNumber),
-      optional("y", kNumber),       optional("z", kNumber),    optional("about", kVector, Value::vector({}))};
-  const Bound b = call.bind(params);
+  const Bound b = call.bind(kRotateParams);
   Affine3 r;
   if (b.present(0)) {
     if (!b.present(1))
@@ -77,11 +81,11 @@ Value rotate_(CallArgs& call) {
   return checked(call, about_point(r, b.point(5)));
 }
 
+const ParamList kScaleParams = {required("sx", kNumber), optional("sy", kNumber), optional("sz", kNumber),
+                                optional("about", kVector, Value::vector({}))};
+
 Value scale_(CallArgs& call) {
-  static const std::vector<Param> params = {required("sx", kNumber), optional("sy", kNumber),
-                                            optional("sz", kNumber),
-                                            optional("about", kVector, Value::vector({}))};
-  const Bound b = call.bind(params);
+  const Bound b = call.bind(kScaleParams);
   if (b.present(1) != b.present(2))
     call.fail_call("scale() takes one factor or three: scale(2) or scale(1, 2, 3)");
   const double sx = b.number(0);
@@ -91,10 +95,10 @@ Value scale_(CallArgs& call) {
   return checked(call, about_point(Affine3::scaling(sx, sy, sz), b.point(3)));
 }
 
+const ParamList kMirrorParams = {required("normal", kVector), optional("about", kVector, Value::vector({}))};
+
 Value mirror_(CallArgs& call) {
-  static const std::vector<Param> params = {required("normal", kVector),
-                                            optional("about", kVector, Value::vector({}))};
-  const Bound b = call.bind(params);
+  const Bound b = call.bind(kMirrorParams);
   if (b.vector(0) == Vector3{}) b.fail(0, "the zero vector is not a normal");
   const Vector3 n = normalize(b.vector(0));
   // Householder reflection I − 2·n·nᵀ.
@@ -104,9 +108,10 @@ Value mirror_(CallArgs& call) {
   return checked(call, about_point(h, b.point(1)));
 }
 
+const ParamList kMatrixParams = {required("rows", kinds(ValueKind::List))};
+
 Value matrix_(CallArgs& call) {
-  static const std::vector<Param> params = {required("rows", kinds(ValueKind::List))};
-  const Bound b = call.bind(params);
+  const Bound b = call.bind(kMatrixParams);
   const Value& rows = b.value(0);
   const std::string shape = "must be 3 rows of 4 numbers: [[a, b, c, tx], [d, e, f, ty], [g, h, i, tz]]";
   if (sequence_size(rows) != 3) b.fail(0, shape);
@@ -132,14 +137,34 @@ Value matrix_(CallArgs& call) {
 }
 
 const BuiltinEntry kTransformBuiltins[] = {
-    {"identity", "identity()", identity_},
-    {"translate", "translate(x, y, z) | translate(v)", translate_},
+    {"identity", "identity()", identity_, "The transform that moves nothing.", {&kIdentityParams}},
+    {"translate",
+     "translate(x, y, z) | translate(v)",
+     translate_,
+     "A translation by three numbers or by a vector.",
+     {&kTranslateXyzParams, &kTranslateVectorParams}},
     {"rotate",
-     "rotate(x: deg) | rotate(y: deg) | rotate(z: deg) | rotate(deg, axis: v)  (each with about: p)",
-     rotate_},
-    {"scale", "scale(s) | scale(sx, sy, sz)  (each with about: p)", scale_},
-    {"mirror", "mirror(normal: v, about: p)", mirror_},
-    {"matrix", "matrix([[a, b, c, tx], [d, e, f, ty], [g, h, i, tz]])", matrix_},
+     "rotate(x: degrees) | rotate(y: degrees) | rotate(z: degrees) | rotate(degrees, axis: v)  (each with "
+     "about: p)",
+     rotate_,
+     "A right-handed rotation in degrees about the x, y and z axes (in that order) or about a given axis, "
+     "through the origin or the point about.",
+     {&kRotateParams}},
+    {"scale",
+     "scale(sx) | scale(sx, sy, sz)  (each with about: p)",
+     scale_,
+     "A scaling by one factor or by one per axis, about the origin or the point about.",
+     {&kScaleParams}},
+    {"mirror",
+     "mirror(normal: v, about: p)",
+     mirror_,
+     "The reflection in the plane perpendicular to normal through the origin or the point about.",
+     {&kMirrorParams}},
+    {"matrix",
+     "matrix(rows)  (rows: [[a, b, c, tx], [d, e, f, ty], [g, h, i, tz]])",
+     matrix_,
+     "The affine map given by three rows of four numbers: the linear part and the translation.",
+     {&kMatrixParams}},
 };
 
 }  // namespace

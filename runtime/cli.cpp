@@ -13,8 +13,10 @@
 
 #include "core/device/atomic_file.hpp"
 #include "runtime/demo_script.hpp"
+#include "runtime/eval_detail.hpp"
 #include "runtime/eval_error.hpp"
 #include "runtime/frame_pipeline.hpp"
+#include "runtime/help_text.hpp"
 #include "runtime/output_plan.hpp"
 #include "runtime/program.hpp"
 
@@ -203,6 +205,26 @@ int run_demo(CliOptions o, std::ostream& out, std::ostream& err) {
   return run_program(*program, o, out, err, start);
 }
 
+int print_help(const std::string& topic, std::ostream& out, std::ostream& err) {
+  if (topic.empty()) {
+    out << usage_text();
+    return kExitOk;
+  }
+  if (topic == "reference") {
+    out << builtin_reference();
+    return kExitOk;
+  }
+  if (const std::optional<std::string> text = language_help(topic)) {
+    out << *text;
+    return kExitOk;
+  }
+  const std::string guess = did_you_mean(topic, language_help_topics());
+  err << "hlrscript: no help on '" << topic << "'" << (guess.empty() ? "" : "; " + guess) << "\n"
+      << "hint: hlrscript help NAME for a built-in (box) or a statement (draw); hlrscript help reference "
+         "lists them all\n";
+  return kExitUsage;
+}
+
 }  // namespace
 
 int run_script(const CliOptions& o, std::ostream& out, std::ostream& err,
@@ -241,8 +263,7 @@ int run_cli(int argc, const char* const argv[], std::istream& in, bool in_is_ter
   try {
     switch (options->mode) {
       case CliOptions::Mode::Help:
-        out << usage_text();
-        return kExitOk;
+        return print_help(options->help_topic, out, err);
       case CliOptions::Mode::Version:
         out << kVersion << "\n";
         return kExitOk;

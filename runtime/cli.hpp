@@ -26,6 +26,7 @@ enum ExitCode : int {
 struct CliOptions {
   enum class Mode { Render, Check, Watch, Demo, Repl, Help, Version } mode = Mode::Render;
   std::string script;
+  std::string help_topic;             // hlrscript help TOPIC
   std::optional<std::string> output;  // -o
   std::optional<std::string> camera;
   std::optional<FrameRange> frames;

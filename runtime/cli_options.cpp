@@ -175,6 +175,7 @@ std::string usage_text() {
        "       hlrscript watch FILE.hls [-o OUT] [options]   # render again whenever an input changes\n"
        "       hlrscript --demo [-o OUT.pdf] [--frames N] [--hidden off|dashed]\n"
        "       hlrscript [repl [FILE]]             # the REPL; with a pipe on stdin: the script it carries\n"
+       "       hlrscript help [NAME|reference]     # a built-in or statement; every built-in in Markdown\n"
        "       hlrscript --help | --version\n"
        "\n"
        "Evaluates an hlrscript scene once per frame and draws each frame as an exact hidden-line drawing.\n"
@@ -210,6 +211,12 @@ std::optional<CliOptions> parse_cli(int argc, const char* const argv[], std::ost
 
   std::vector<std::string> args =
       vm.count("args") ? vm["args"].as<std::vector<std::string>>() : std::vector<std::string>{};
+  if (o.mode == CliOptions::Mode::Render && !args.empty() && args.front() == "help") {
+    if (args.size() > 2) return usage_error(err, "help takes one topic, as in: hlrscript help box");
+    o.mode = CliOptions::Mode::Help;
+    if (args.size() == 2) o.help_topic = args[1];
+    return o;
+  }
   if (o.mode == CliOptions::Mode::Demo) {
     if (!args.empty()) return usage_error(err, "--demo takes no script ('" + args.front() + "')");
   } else {

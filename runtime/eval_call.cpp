@@ -51,17 +51,31 @@ Value Evaluator::eval_call(const lang::CallExpr& call, const lang::Expr& expr, c
   return call_user(function, std::get<UserFunction>(function.body), args, expr.span);
 }
 
-const std::string& Evaluator::signature_of(const Function& function, const lang::DefStmt& def) {
-  const auto it = signatures_.find(&def);
-  if (it != signatures_.end()) return it->second;
-  std::string s = function.name + "(";
+std::string def_signature(const std::string& name, const lang::DefStmt& def, const SourceTable& sources) {
+  std::string s = name + "(";
   for (std::size_t i = 0; i < def.params.size(); ++i) {
     if (i) s += ", ";
     s += def.params[i].name.text;
-    if (def.params[i].default_value) s += " = " + source_text(def.params[i].default_value->span);
+    if (def.params[i].default_value) s += " = " + span_text(sources, def.params[i].default_value->span);
   }
-  s += ")";
-  return signatures_.emplace(&def, std::move(s)).first->second;
+  return s + ")";
+}
+
+std::vector<int> match_def_arguments(const CallSite& site, const std::vector<Arg>& args,
+                                     const lang::DefStmt& def) {
+  std::vector<std::string_view> names;
+  std::vector<bool> needed;
+  for (const lang::Param& p : def.params) {
+    names.push_back(p.name.text);
+    needed.push_back(!p.default_value);
+  }
+  return match_arguments(site, args, names, needed);
+}
+
+const std::string& Evaluator::signature_of(const Function& function, const lang::DefStmt& def) {
+  const auto it = signatures_.find(&def);
+  if (it != signatures_.end()) return it->second;
+  return signatures_.emplace(&def, def_signature(function.name, def, sources_)).first->second;
 }
 
 Value Evaluator::call_user(const Function& function, const UserFunction& user, const std::vector<Arg>& args,
@@ -73,13 +87,7 @@ Value Evaluator::call_user(const Function& function, const UserFunction& user, c
   const CallDepth depth(call_depth_);
   try {
     const CallSite site{function.name, signature_of(function, def), call_span};
-    std::vector<std::string_view> names;
-    std::vector<bool> needed;
-    for (const lang::Param& p : def.params) {
-      names.push_back(p.name.text);
-      needed.push_back(!p.default_value);
-    }
-    const std::vector<int> slots = match_arguments(site, args, names, needed);
+    const std::vector<int> slots = match_def_arguments(site, args, def);
 
     auto local = std::make_shared<Scope>(user.closure);
     for (std::size_t i = 0; i < def.params.size(); ++i) {

@@ -5,7 +5,9 @@
 #include <string>
 #include <vector>
 
+#include "lang/ast.hpp"
 #include "lang/source.hpp"
+#include "runtime/arguments.hpp"
 #include "runtime/eval_error.hpp"
 #include "runtime/limits.hpp"
 
@@ -31,6 +33,12 @@ class DepthGuard {
 
 // "did you mean 'box'?" for the closest candidate within a small edit distance, else "".
 std::string did_you_mean(const std::string& name, const std::vector<std::string>& candidates);
+
+// "f(a, b = 2)": a user function's signature as written, for hints.
+std::string def_signature(const std::string& name, const lang::DefStmt& def, const SourceTable& sources);
+// Which argument fills each of the def's parameters; the errors of match_arguments.
+std::vector<int> match_def_arguments(const CallSite& site, const std::vector<Arg>& args,
+                                     const lang::DefStmt& def);
 
 // A note pointing at `span`, appended to the error's first diagnostic while there are few notes (a deep
 // recursion would otherwise list every call).

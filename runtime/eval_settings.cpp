@@ -89,20 +89,27 @@ std::filesystem::path stdlib_module_directory() {
   return HLR_STDLIB_MODULES;
 }
 
-void Evaluator::exec_include(const lang::IncludeStmt& include, const ScopePtr& scope) {
+IncludeTarget include_target(const SourceTable& sources, const lang::IncludeStmt& include) {
   namespace fs = std::filesystem;
-  const SourceEntry* from = sources_.entry(include.path_span.file);
+  const SourceEntry* from = sources.entry(include.path_span.file);
   const fs::path base = from ? from->path.parent_path() : fs::current_path();
   const fs::path shown_base = from ? fs::path(from->source->name()).parent_path() : fs::path();
   // "std/NAME.hls" names a library module written in hlrscript (stdlib/modules/); any other path is
   // relative to the including file.
-  const bool library = include.path.rfind("std/", 0) == 0;
-  const fs::path target = library ? stdlib_module_directory() / include.path.substr(4)
-                          : fs::path(include.path).is_absolute() ? fs::path(include.path)
-                                                                 : base / include.path;
-  const std::string shown = library || fs::path(include.path).is_absolute()
-                                ? include.path
-                                : (shown_base / include.path).lexically_normal().string();
+  IncludeTarget t;
+  t.library = include.path.rfind("std/", 0) == 0;
+  t.path = t.library                              ? stdlib_module_directory() / include.path.substr(4)
+           : fs::path(include.path).is_absolute() ? fs::path(include.path)
+                                                  : base / include.path;
+  t.shown = t.library || fs::path(include.path).is_absolute()
+                ? include.path
+                : (shown_base / include.path).lexically_normal().string();
+  return t;
+}
+
+void Evaluator::exec_include(const lang::IncludeStmt& include, const ScopePtr& scope) {
+  const SourceEntry* from = sources_.entry(include.path_span.file);
+  const auto [target, shown, library] = include_target(sources_, include);
   if (include.path.empty()) fail(include.path_span, "the include path is empty");
 
   std::string error;

@@ -66,11 +66,7 @@ void Evaluator::define(const ScopePtr& scope, const lang::Name& name, Value valu
   scope->define(name.text, std::move(value), name.span);
 }
 
-std::string Evaluator::source_text(const lang::SourceSpan& span) const {
-  const lang::SourceFile* file = sources_.file(span.file);
-  if (!file || span.end.offset < span.begin.offset || span.end.offset > file->text().size()) return "...";
-  return file->text().substr(span.begin.offset, span.end.offset - span.begin.offset);
-}
+std::string Evaluator::source_text(const lang::SourceSpan& span) const { return span_text(sources_, span); }
 
 Evaluator::Flow Evaluator::run_statements(const std::vector<lang::Stmt>& statements, const ScopePtr& scope) {
   for (const lang::Stmt& s : statements)

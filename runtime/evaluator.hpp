@@ -29,6 +29,14 @@ namespace hlr::runtime {
 // the source tree's stdlib/modules (compiled in).
 std::filesystem::path stdlib_module_directory();
 
+// The file an `include` statement names, and how messages show it.
+struct IncludeTarget {
+  std::filesystem::path path;
+  std::string shown;
+  bool library = false;  // "std/NAME.hls"
+};
+IncludeTarget include_target(const SourceTable& sources, const lang::IncludeStmt& include);
+
 class Evaluator {
  public:
   Evaluator(SourceTable& sources, FrameScene& out);

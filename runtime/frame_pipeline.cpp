@@ -17,6 +17,7 @@
 
 #include "core/hlr/render_frame.hpp"
 #include "runtime/eval_error.hpp"
+#include "runtime/interrupt.hpp"
 
 namespace hlr::runtime {
 
@@ -65,6 +66,7 @@ void run_frame(const Program& program, int frame, double fps, const PipelineOpti
   HlrOptions hlr;
   hlr.include_hidden = settings.hidden;
   hlr.threads = engine_threads;
+  hlr.cancel = &interrupt_requested();
   const auto start = Clock::now();
   FrameResult result = render_frame(scene.scene, settings.camera->camera, hlr);
   r.render_seconds = seconds_since(start);

@@ -5,6 +5,7 @@
 #include <memory>
 #include <string>
 #include <variant>
+#include <vector>
 
 #include "lang/ast.hpp"
 #include "runtime/value.hpp"
@@ -13,12 +14,17 @@ namespace hlr::runtime {
 
 class CallArgs;
 class Scope;
+struct Param;
 
 using BuiltinImpl = Value (*)(CallArgs& args);
 
 struct BuiltinFunction {
   BuiltinImpl impl = nullptr;
   std::string signature;  // shown in hints: "box(sx, sy, sz) | box(min: p, max: q) | box(size: v, center: p)"
+  std::string summary;    // one sentence for :help and the reference
+  // The parameter lists the implementation binds (one per form, the form the arguments choose); the
+  // resolver checks calls against them before the first frame. Empty: any arguments (min, max).
+  std::vector<const std::vector<Param>*> forms;
 };
 
 struct UserFunction {

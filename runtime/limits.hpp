@@ -20,6 +20,7 @@ inline constexpr std::size_t kMaxIncludeDepth = 32;          // include inside i
 // an expression at 256 levels and blocks at 64, so a legal script stays far below; the cap only turns
 // an unforeseen path into an error instead of a stack overflow. The evaluation thread's stack is sized
 // for it (big_stack.cpp).
+inline constexpr std::uint64_t kInterruptCheckSteps = 4096;  // evaluation steps between Ctrl-C checks
 inline constexpr std::size_t kMaxEvalDepth = 100'000;
 
 // "too many nested calls (the limit is 256)"

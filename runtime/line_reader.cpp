@@ -45,9 +45,12 @@ char* next_match(const char*, int state) {
   return m;
 }
 
-char** complete(const char* text, int, int) {
+char** complete(const char* text, int, int end) {
   if (!active_completer) return nullptr;
-  pending_matches = (*active_completer)(std::string(rl_line_buffer ? rl_line_buffer : ""), text);
+  // The line up to the cursor: what the word is completed in (a call's parentheses, a :command).
+  const std::string line = rl_line_buffer ? rl_line_buffer : "";
+  pending_matches = (*active_completer)(
+      line.substr(0, std::min(line.size(), static_cast<std::size_t>(std::max(end, 0)))), text);
   if (pending_matches.empty()) return nullptr;  // libedit then completes file names
   return rl_completion_matches(text, next_match);
 }

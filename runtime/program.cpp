@@ -4,11 +4,14 @@
 
 #include "runtime/big_stack.hpp"
 #include "runtime/evaluator.hpp"
+#include "runtime/resolver.hpp"
 
 namespace hlr::runtime {
 
 Program::Program(std::unique_ptr<SourceTable> sources, const SourceEntry* main)
-    : sources_(std::move(sources)), main_(main) {}
+    : sources_(std::move(sources)), main_(main) {
+  if (parsed()) run_on_big_stack([&] { static_errors_ = resolve_program(*main_, *sources_); });
+}
 
 std::unique_ptr<Program> Program::load(const std::filesystem::path& path, const std::string& display_name) {
   auto sources = std::make_unique<SourceTable>();
@@ -32,6 +35,9 @@ FrameScene Program::evaluate(const FrameTime& time,
   if (!parsed())
     throw EvalError(main_->diagnostics, ErrorKind::Script,
                     std::to_string(main_->diagnostics.size()) + " syntax errors in " + main_->source->name());
+  if (!static_errors_.empty())
+    throw EvalError(static_errors_, ErrorKind::Script,
+                    static_errors_.front().message + " in " + main_->source->name());
   FrameScene scene;
   scene.time = time;
   const auto start = std::chrono::steady_clock::now();

@@ -27,9 +27,12 @@ class Program {
 
   bool parsed() const { return main_->script.has_value(); }
   const std::vector<lang::Diagnostic>& syntax_errors() const { return main_->diagnostics; }
+  // What the resolver (runtime/resolver.hpp) found in the whole program when it was loaded: unknown
+  // names, calls whose arguments do not fit. evaluate() throws them before running anything.
+  const std::vector<lang::Diagnostic>& static_errors() const { return static_errors_; }
 
   // Evaluates the whole script with `frame`, `t` and `time` bound. Throws EvalError (also for a script
-  // with syntax errors). Runs on a thread with a large stack (big_stack.hpp), so no script can overflow
+  // with syntax errors or static errors). Runs on a thread with a large stack (big_stack.hpp), so no script can overflow
   // the caller's.
   FrameScene evaluate(const FrameTime& time) const;
   // The same, then `inspect` sees the evaluator (its top-level names) before it is gone (the REPL).
@@ -43,6 +46,7 @@ class Program {
 
   std::unique_ptr<SourceTable> sources_;  // grows as includes are loaded (internally synchronised)
   const SourceEntry* main_;
+  std::vector<lang::Diagnostic> static_errors_;
 };
 
 // `frame`, `t` = frame/(N − 1) (0 for one frame) and `time` = frame/fps.

@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "runtime/cli.hpp"
+#include "runtime/interrupt.hpp"
 #include "runtime/line_reader.hpp"
 #include "runtime/program.hpp"
 #include "runtime/repl_session.hpp"
@@ -20,9 +21,13 @@ namespace {
 
 std::atomic<bool> interrupted{false};
 
-void on_interrupt(int) { interrupted = true; }
+void on_interrupt(int) {
+  interrupted = true;
+  interrupt_requested() = true;  // stops an evaluation or a render under way (runtime/interrupt.hpp)
+}
 
-// Ctrl-C cancels the line being typed instead of ending the process; restored on leaving.
+// Ctrl-C cancels the line being typed, or stops the work under way, instead of ending the process;
+// restored on leaving.
 class InterruptGuard {
  public:
   InterruptGuard() {
@@ -57,6 +62,15 @@ int run_repl(const CliOptions& o, std::istream& in, bool terminal, std::ostream&
   if (!terminal && !o.repl_requested) return run_stdin_script(o, in, out, err);
 
   ReplSession session(terminal_size(STDOUT_FILENO));
+  // Asked once, before line editing owns the terminal: the answer does not change within a session.
+  const TerminalGraphics graphics =
+      terminal ? detect_terminal_graphics(STDIN_FILENO, STDOUT_FILENO) : TerminalGraphics::Braille;
+  const auto fit_terminal = [&] {
+    const TerminalSize size = terminal_size(STDOUT_FILENO);
+    session.set_terminal_size(size);
+    session.set_graphics(graphics, terminal_pixels(STDOUT_FILENO, size.columns, size.rows));
+  };
+  fit_terminal();
   if (!o.script.empty()) out << session.feed(":load " + o.script).text;
   std::unique_ptr<LineReader> reader =
       terminal ? make_terminal_reader(default_history_path(),
@@ -70,6 +84,7 @@ int run_repl(const CliOptions& o, std::istream& in, bool terminal, std::ostream&
   std::string entry;
   for (;;) {
     interrupted = false;
+    interrupt_requested() = false;
     const std::optional<std::string> line = reader->read(session.continuing() ? "...> " : "hls> ");
     if (!line) {
       if (interrupted && terminal) {  // Ctrl-C: drop what was typed, stay
@@ -82,7 +97,8 @@ int run_repl(const CliOptions& o, std::istream& in, bool terminal, std::ostream&
       break;
     }
     entry += *line + "\n";
-    session.set_terminal_size(terminal_size(STDOUT_FILENO));
+    fit_terminal();
+    interrupt_requested() = false;  // a Ctrl-C typed while reading the line is no request to stop
     const ReplReply reply = session.feed(*line);
     if (reply.kind == ReplReply::Kind::More) continue;
     reader->remember(entry.substr(0, entry.size() - 1));

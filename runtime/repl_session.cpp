@@ -1,6 +1,7 @@
 #include "runtime/repl_session.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <chrono>
 #include <cstdio>
 #include <exception>
@@ -14,61 +15,28 @@
 #include "lang/parser.hpp"
 #include "runtime/builtins.hpp"
 #include "runtime/cli.hpp"
+#include "runtime/eval_detail.hpp"
 #include "runtime/eval_error.hpp"
 #include "runtime/evaluator.hpp"
 #include "runtime/format_value.hpp"
+#include "runtime/help_text.hpp"
+#include "runtime/interrupt.hpp"
 #include "runtime/output_settings.hpp"
 #include "runtime/program.hpp"
+#include "runtime/repl_detail.hpp"
 
 namespace hlr::runtime {
 
 namespace fs = std::filesystem;
+using repl::done;
+using repl::error;
+using repl::Extent;
+using repl::point_text;
+using repl::trim;
 
 namespace {
 
 constexpr const char* kValueName = "__repl_value";
-
-const std::vector<std::string> kKeywords = {"solid",  "let",     "def",     "for",    "if",    "else",
-                                            "draw",   "camera",  "animate", "output", "paper", "style",
-                                            "pen",    "plotter", "include", "at",     "then",  "in",
-                                            "return", "vertex",  "face",    "hole",   "line"};
-
-struct Command {
-  const char* name;
-  const char* usage;
-  const char* help;
-};
-const Command kCommands[] = {
-    {"help", ":help", "this list"},
-    {"load", ":load FILE", "replace the session by a script (then :reload reads it again)"},
-    {"reload", ":reload", "read the loaded script again"},
-    {"show", ":show", "draw the current frame in the terminal"},
-    {"render", ":render [FILE]", "write the session's frames to FILE (.pdf .svg .png .hpgl .steps .json)"},
-    {"camera", ":camera [NAME]", "draw with camera NAME (no name: the last declared)"},
-    {"orbit", ":orbit DTHETA [DPHI]",
-     "step the camera round the scene (degrees; Albers' theta and phi keys)"},
-    {"zoom", ":zoom F", "magnify the picture F times"},
-    {"dolly", ":dolly D", "move the eye D scene units forward along the view"},
-    {"frame", ":frame N", "look at frame N of the animation"},
-    {"hidden", ":hidden on|off", "draw hidden lines dashed, or not"},
-    {"stats", ":stats", "faces, edges, visible pieces, pen plan, render time of the current frame"},
-    {"scene", ":scene", "what is drawn, with sizes, and the cameras"},
-    {"undo", ":undo", "take back the last accepted input"},
-    {"save", ":save FILE", "write the session as a script that renders the same drawing"},
-    {"quit", ":quit", "leave (Ctrl-D too)"},
-};
-
-ReplReply done(std::string text) { return {ReplReply::Kind::Done, std::move(text)}; }
-ReplReply error(std::string text) {
-  if (!text.empty() && text.back() != '\n') text += '\n';
-  return {ReplReply::Kind::Error, std::move(text)};
-}
-
-std::string trim(const std::string& s) {
-  const auto b = s.find_first_not_of(" \t\r\n");
-  if (b == std::string::npos) return "";
-  return s.substr(b, s.find_last_not_of(" \t\r\n") - b + 1);
-}
 
 // The parser stopped at the end of the input: an open brace, a trailing operator, a missing operand.
 bool incomplete(const std::string& text, const lang::ParseResult& r) {
@@ -89,23 +57,6 @@ std::string diagnostics_text(const std::vector<lang::Diagnostic>& ds, const Prog
   print_diagnostics(out, ds, program.sources());
   return out.str();
 }
-
-std::string point_text(Point3 p) {
-  return "(" + format_number(p.x) + ", " + format_number(p.y) + ", " + format_number(p.z) + ")";
-}
-
-// The box round solids' vertices.
-struct Extent {
-  Point3 lo{1e300, 1e300, 1e300}, hi{-1e300, -1e300, -1e300};
-  void add(const Solid& s) {
-    for (const Point3& p : s.vertices) {
-      lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
-      hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
-    }
-  }
-  bool empty() const { return lo.x > hi.x; }
-  Point3 middle() const { return {(lo.x + hi.x) / 2, (lo.y + hi.y) / 2, (lo.z + hi.z) / 2}; }
-};
 
 // A value as the REPL shows it: solids by their size, everything else as str() prints it.
 std::string describe(const Value& v) {
@@ -157,14 +108,6 @@ FrameScene evaluate_frame(const Program& program, int frame,
 
 }  // namespace
 
-struct ReplSession::View {
-  FrameScene scene;
-  std::string camera;
-  Camera view_camera;
-  FrameResult result;
-  double render_ms = 0;
-};
-
 ReplSession::ReplSession(TerminalSize size) : size_(size) {}
 
 std::string ReplSession::join(const std::vector<Chunk>& chunks) const {
@@ -184,6 +127,24 @@ std::unique_ptr<Program> session_program(const std::string& text, const std::opt
 }  // namespace
 
 ReplReply ReplSession::feed(const std::string& line) {
+  // The statements change only once an input succeeded; the view settings a command tries are put back.
+  const int frame = frame_;
+  const std::optional<std::string> camera = camera_;
+  const std::optional<CameraAdjustment> step = step_;
+  const std::string stepped_name = stepped_name_;
+  try {
+    return feed_line(line);
+  } catch (const RenderCancelled&) {
+    frame_ = frame;
+    camera_ = camera;
+    step_ = step;
+    stepped_name_ = stepped_name;
+    pending_.clear();
+    return error("stopped (Ctrl-C); the session is as it was");
+  }
+}
+
+ReplReply ReplSession::feed_line(const std::string& line) {
   if (pending_.empty()) {
     const std::string t = trim(line);
     if (t.empty()) return done("");
@@ -312,6 +273,7 @@ std::optional<ReplSession::View> ReplSession::view(std::string& message) const {
     v.view_camera = c.camera;
     HlrOptions o;
     o.include_hidden = hidden_.value_or(v.scene.hidden.value_or(false));
+    o.cancel = &interrupt_requested();
     const auto start = std::chrono::steady_clock::now();
     v.result = render_frame(v.scene.scene, c.camera, o);
     v.render_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
@@ -328,8 +290,18 @@ ReplReply ReplSession::show() {
   std::string message;
   const std::optional<View> v = view(message);
   if (!v) return error(message);
-  std::string out =
-      braille_picture(v->result.segments, v->view_camera.frame, size_.columns, std::max(1, size_.rows - 2));
+  std::string out;
+  if (graphics_ != TerminalGraphics::Braille) {
+    try {
+      out =
+          terminal_image(v->result.segments, v->view_camera.frame, graphics_, pixels_.width, pixels_.height);
+    } catch (const std::runtime_error&) {
+      out.clear();  // cairo could not draw it: the braille picture says the same
+    }
+  }
+  if (out.empty())
+    out =
+        braille_picture(v->result.segments, v->view_camera.frame, size_.columns, std::max(1, size_.rows - 2));
   out += "camera " + v->camera + ", frame " + std::to_string(frame_) + ": " +
          std::to_string(v->result.stats.visible_segments) + " visible pieces\n";
   return done(out);
@@ -457,80 +429,6 @@ ReplReply ReplSession::load(const fs::path& path) {
   }
 }
 
-ReplReply ReplSession::command(const std::string& line) {
-  std::istringstream words(line.substr(1));
-  std::string name, arg;
-  words >> name;
-  std::getline(words >> std::ws, arg);
-  arg = trim(arg);
-  std::vector<const Command*> matches;
-  for (const Command& c : kCommands) {
-    if (name == c.name) {
-      matches = {&c};
-      break;
-    }
-    if (!name.empty() && std::string(c.name).rfind(name, 0) == 0) matches.push_back(&c);
-  }
-  if (matches.size() != 1) {
-    std::string known;
-    for (const Command* c : matches) known += std::string(known.empty() ? "" : ", ") + ":" + c->name;
-    return error(matches.empty() ? "unknown command ':" + name + "'; :help lists them"
-                                 : "':" + name + "' could be " + known);
-  }
-  const std::string cmd = matches.front()->name;
-  if (cmd == "help") return done(repl_help_text());
-  if (cmd == "quit") return {ReplReply::Kind::Quit, ""};
-  if (cmd == "show") return show();
-  if (cmd == "stats") return stats();
-  if (cmd == "scene") return scene();
-  if (cmd == "render") return render(arg);
-  if (cmd == "save") return save(arg);
-  if (cmd == "load") return arg.empty() ? error(":load needs a file name") : load(arg);
-  if (cmd == "reload") return loaded_ ? load(*loaded_) : error("nothing loaded yet: :load FILE");
-  if (cmd == "undo") {
-    if (undo_.empty()) return error("nothing to undo");
-    chunks_ = std::move(undo_.back());
-    undo_.pop_back();
-    return done("undone; the session has " + std::to_string(chunks_.size()) + " inputs\n");
-  }
-  if (cmd == "orbit" || cmd == "zoom" || cmd == "dolly") return step_camera(cmd, arg);
-  if (cmd == "hidden") {
-    if (arg != "on" && arg != "off") return error(":hidden needs on or off");
-    hidden_ = arg == "on";
-    return done(std::string("hidden lines ") + (*hidden_ ? "dashed" : "off") + "\n");
-  }
-  if (cmd == "camera") {
-    if (arg.empty()) {
-      camera_.reset();
-      step_.reset();
-      return done("drawing with the last camera declared\n");
-    }
-    const std::optional<std::string> before = camera_;
-    const std::optional<CameraAdjustment> stepped = step_;
-    camera_ = arg;
-    step_.reset();  // a camera chosen anew starts where its statement puts it
-    std::string message;
-    if (!view(message)) {
-      camera_ = before;
-      step_ = stepped;
-      return error(message);
-    }
-    return done("drawing with camera " + arg + "\n");
-  }
-  if (cmd == "frame") {
-    char* end = nullptr;
-    const long n = std::strtol(arg.c_str(), &end, 10);
-    if (arg.empty() || *end != '\0' || n < 0 || n > 1'000'000)
-      return error(":frame needs a frame number, as in :frame 3");
-    const int before = frame_;
-    frame_ = static_cast<int>(n);
-    const ReplReply r = scene();
-    if (r.kind == ReplReply::Kind::Error) frame_ = before;
-    return r;
-  }
-  return error("unknown command");
-}
-
 std::optional<std::string> ReplSession::drawn_camera() const {
   if (step_) return stepped_name_;
   return camera_;
@@ -556,77 +454,6 @@ std::string ReplSession::view_text(const std::vector<Chunk>& chunks) const {
     }
   }
   return text;
-}
-
-ReplReply ReplSession::step_camera(const std::string& cmd, const std::string& arguments) {
-  std::istringstream in(arguments);
-  double x = 0, y = 0;
-  const bool has_x = static_cast<bool>(in >> x);
-  const bool has_y = static_cast<bool>(in >> y);
-  std::string rest;
-  in.clear();
-  in >> rest;
-  if (!has_x || !rest.empty() || (cmd != "orbit" && has_y))
-    return error(cmd == "orbit"
-                     ? ":orbit needs degrees: :orbit 15 or :orbit 15 -10"
-                     : ":" + cmd + " needs a number, as in :" + cmd + (cmd == "zoom" ? " 1.5" : " 2"));
-  if (cmd == "zoom" && !(x > 0)) return error(":zoom needs a positive factor");
-  const std::optional<CameraAdjustment> before = step_;
-  if (!step_) {
-    // Pivot: the middle of what is drawn in the current frame, fixed from now on.
-    std::string message;
-    const std::optional<View> v = view(message);
-    if (!v) return error(message);
-    Extent e;
-    for (const SceneObject& o : v->scene.scene.objects) e.add(*o.solid);
-    CameraAdjustment a;
-    if (!e.empty()) a.pivot = e.middle();
-    step_ = a;
-    stepped_name_ = v->camera + "_view";
-  }
-  if (cmd == "orbit") {
-    step_->theta_deg += x;
-    step_->phi_deg += has_y ? y : 0;
-  } else if (cmd == "zoom") {
-    step_->zoom *= x;
-  } else {
-    step_->dolly += x;
-  }
-  const ReplReply shown = show();
-  if (shown.kind == ReplReply::Kind::Error) step_ = before;
-  return shown;
-}
-
-std::vector<std::string> ReplSession::completions(const std::string& line, const std::string& word) const {
-  std::vector<std::string> out;
-  auto offer = [&](const std::string& candidate) {
-    if (candidate.rfind(word, 0) == 0 && std::find(out.begin(), out.end(), candidate) == out.end())
-      out.push_back(candidate);
-  };
-  const std::string start = trim(line);
-  if (!start.empty() && start[0] == ':') {
-    if (start.find(' ') != std::string::npos) return out;  // a file name: libedit completes it
-    for (const Command& c : kCommands) offer(std::string(":") + c.name);
-    return out;
-  }
-  for (const std::string& k : kKeywords) offer(k);
-  for (const std::string& b : builtins().names()) offer(b);
-  for (const Chunk& c : chunks_)
-    for (const std::string& n : c.names) offer(n);
-  std::sort(out.begin(), out.end());
-  return out;
-}
-
-std::string repl_help_text() {
-  std::string out =
-      "Type statements as in a script (solid, let, def, draw, camera, ...); an expression alone shows its "
-      "value.\nA definition of a name the session has replaces it. Commands (any unambiguous prefix):\n";
-  for (const Command& c : kCommands) {
-    char line[160];
-    std::snprintf(line, sizeof line, "  %-16s %s\n", c.usage, c.help);
-    out += line;
-  }
-  return out;
 }
 
 }  // namespace hlr::runtime

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "core/camera/camera_adjust.hpp"
+#include "runtime/terminal_graphics.hpp"
 #include "runtime/terminal_picture.hpp"
 
 namespace hlr::runtime {
@@ -29,7 +30,8 @@ class ReplSession {
  public:
   explicit ReplSession(TerminalSize size = {});
 
-  // One line of input (without its newline).
+  // One line of input (without its newline). Ctrl-C (interrupt_requested()) stops its work; the
+  // session then stays as it was.
   ReplReply feed(const std::string& line);
   // Drops a half-typed statement (Ctrl-C at the prompt).
   void cancel_input() { pending_.clear(); }
@@ -41,6 +43,11 @@ class ReplSession {
   std::vector<std::string> completions(const std::string& line, const std::string& word) const;
 
   void set_terminal_size(TerminalSize size) { size_ = size; }
+  // How :show draws: braille text, or the real picture of `pixels` for kitty and sixel terminals.
+  void set_graphics(TerminalGraphics kind, PixelSize pixels) {
+    graphics_ = kind;
+    pixels_ = pixels;
+  }
 
  private:
   struct Chunk {
@@ -50,9 +57,13 @@ class ReplSession {
   };
   struct View;  // a rendered frame
 
+  ReplReply feed_line(const std::string& line);
   ReplReply accept(const std::string& text);
   ReplReply evaluate_expression(const std::string& text);
   ReplReply command(const std::string& line);
+  ReplReply help(const std::string& topic) const;
+  // The parameters of the function the session's name or a built-in names (for completion).
+  std::vector<std::string> parameter_names(const std::string& function) const;
   ReplReply load(const std::filesystem::path& path);
   ReplReply show();
   ReplReply stats();
@@ -68,6 +79,8 @@ class ReplSession {
   std::optional<View> view(std::string& error) const;
 
   TerminalSize size_;
+  TerminalGraphics graphics_ = TerminalGraphics::Braille;
+  PixelSize pixels_{0, 0};
   std::vector<Chunk> chunks_;
   std::vector<std::vector<Chunk>> undo_;  // the session before each accepted input
   std::string pending_;                   // lines of an unfinished statement

@@ -117,4 +117,10 @@ void print_diagnostics(std::ostream& out, const std::vector<lang::Diagnostic>& d
   for (const lang::Diagnostic& d : diagnostics) out << format_diagnostic(d, sources);
 }
 
+std::string span_text(const SourceTable& sources, const lang::SourceSpan& span) {
+  const lang::SourceFile* file = sources.file(span.file);
+  if (!file || span.end.offset < span.begin.offset || span.end.offset > file->text().size()) return "...";
+  return file->text().substr(span.begin.offset, span.end.offset - span.begin.offset);
+}
+
 }  // namespace hlr::runtime

@@ -58,6 +58,9 @@ class SourceTable {
 // into other files than the diagnostic's).
 void print_diagnostics(std::ostream& out, const std::vector<lang::Diagnostic>& diagnostics,
                        const SourceTable& sources);
+// The text `span` covers, "..." when it is not in a known file.
+std::string span_text(const SourceTable& sources, const lang::SourceSpan& span);
+
 std::string format_diagnostic(const lang::Diagnostic& diagnostic, const SourceTable& sources);
 
 }  // namespace hlr::runtime

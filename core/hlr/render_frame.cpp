@@ -1,10 +1,10 @@
 #include "core/hlr/render_frame.hpp"
 
+#include <tbb/enumerable_thread_specific.h>
+
 #include <algorithm>
 #include <memory>
 #include <optional>
-
-#include <tbb/enumerable_thread_specific.h>
 
 #include "core/geometry/clip2d.hpp"
 #include "core/hlr/face_grid.hpp"
@@ -33,7 +33,8 @@ bool clip_to_frame(Candidate& c, const Camera& camera) {
 }
 
 bool is_own_face(const Candidate& c, const Occluder& o) {
-  return (o.object == c.own_object0() && o.face == c.own_face0) || (o.object == c.own_object1() && o.face == c.own_face1);
+  return (o.object == c.own_object0() && o.face == c.own_face0) ||
+         (o.object == c.own_object1() && o.face == c.own_face1);
 }
 
 struct Worker {
@@ -102,7 +103,13 @@ struct Worker {
 }  // namespace
 
 FrameResult render_frame(const Scene& scene, const Camera& camera, const HlrOptions& options) {
-  FrameSetup setup = prepare_frame(scene, camera, options.intersection_lines, options.include_hidden, options.threads);
+  const auto check_cancel = [&] {
+    if (options.cancel && options.cancel->load(std::memory_order_relaxed)) throw RenderCancelled();
+  };
+  check_cancel();
+  FrameSetup setup =
+      prepare_frame(scene, camera, options.intersection_lines, options.include_hidden, options.threads);
+  check_cancel();
 
   // Only what lies inside the picture frame is examined.
   std::size_t kept = 0;
@@ -134,11 +141,13 @@ FrameResult render_frame(const Scene& scene, const Camera& camera, const HlrOpti
   const Affine3 world_from_view = camera.viewFromWorld.inverse();
   // One worker (scratch buffers, stamps) per thread that takes part; chunks go to whichever is free.
   tbb::enumerable_thread_specific<Worker> workers([&] {
-    return Worker{setup, camera, *grid, options, world_from_view,
-                  std::vector<std::uint32_t>(setup.occluders.size(), 0), {}, {}, 0, {}};
+    return Worker{
+        setup, camera, *grid, options, world_from_view, std::vector<std::uint32_t>(setup.occluders.size(), 0),
+        {},    {},     0,     {}};
   });
   // About 0.5 µs per candidate on one core: a thousand of them is half a millisecond.
   parallel_chunks(chunks, threads_for(n, 2048, options.threads), [&](std::size_t k) {
+    check_cancel();
     Worker& w = workers.local();
     // Each chunk's pieces are gathered in the worker's buffer and stored at their exact size: growing
     // every chunk's vector by doubling would hold up to twice the output in slack at the frame's peak.
@@ -162,8 +171,8 @@ FrameResult render_frame(const Scene& scene, const Camera& camera, const HlrOpti
     std::vector<VisibleSegment>().swap(part);
   }
   result.stats.face_tests = face_tests;
-  result.stats.visible_segments = static_cast<std::size_t>(
-      std::count_if(result.segments.begin(), result.segments.end(), [](const VisibleSegment& s) { return !s.hidden; }));
+  result.stats.visible_segments = static_cast<std::size_t>(std::count_if(
+      result.segments.begin(), result.segments.end(), [](const VisibleSegment& s) { return !s.hidden; }));
   return result;
 }
 

@@ -5,6 +5,9 @@
 // Visibility changes only at computed crossing points; nothing is sampled.
 #pragma once
 
+#include <atomic>
+#include <stdexcept>
+
 #include "core/camera/camera.hpp"
 #include "core/hlr/scene.hpp"
 #include "core/hlr/visible_segment.hpp"
@@ -12,9 +15,18 @@
 namespace hlr {
 
 struct HlrOptions {
-  bool include_hidden = false;      // also return hidden pieces (hidden = true), for a dashed layer
-  bool intersection_lines = true;   // draw where faces of different solids cross
+  bool include_hidden = false;     // also return hidden pieces (hidden = true), for a dashed layer
+  bool intersection_lines = true;  // draw where faces of different solids cross
   unsigned threads = 0;  // 0: the caller's task arena (every core unless --jobs bounds it); 1: this thread
+  // Checked between chunks of work (a fraction of a millisecond each): when it becomes true the
+  // frame stops with RenderCancelled (the REPL's Ctrl-C).
+  const std::atomic<bool>* cancel = nullptr;
+};
+
+// The work was stopped through a cancel flag; nothing of it is kept.
+class RenderCancelled : public std::runtime_error {
+ public:
+  RenderCancelled() : std::runtime_error("stopped") {}
 };
 
 FrameResult render_frame(const Scene& scene, const Camera& camera, const HlrOptions& options = {});

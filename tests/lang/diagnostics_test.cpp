@@ -132,7 +132,7 @@ const Case kCases[] = {
   {"include \"part-{n}.hls\"", "1:9: the file name after 'include' must be a plain string, without '{...}'"},
   // expressions
   {"let x = 1 +", "1:12: expected an operand after the operator"},
-  {"let x = (1, 2)", "1:14: expected ',' and a third component: a vector has three components, as in '(x, y, z)'"},
+  {"let x = (1, 2 3)", "1:15: expected ')' or ',' and a third component after the vector's second component (to close '(' at line 1)"},
   {"let x = (1, 2, 3, 4)", "1:17: expected ')' after the third component: a vector has exactly three components (to close '(' at line 1)"},
   {"let x = [1, 2,]", "1:15: expected a list element after ','"},
   {"let x = f(1,)", "1:13: expected an argument after ','"},

@@ -103,7 +103,8 @@ TEST(Grammar, ParensAndVectors) {
                              {"(-x, y * 2, f(z))", S},
                              {"()", G, "expected an expression after '('"},
                              {"(1", G, "expected ')' or ','"},
-                             {"(1, 2)", G, "expected ',' and a third component"},
+                             {"(1, 2)", S},
+                             {"(1, 2 3)", G, "expected ')' or ',' and a third component"},
                              {"(1, 2, 3, 4)", G, "expected ')' after the third component"},
                              {"(1,)", G, "expected the second component"},
                              {"(1, 2,)", G, "expected the third component"}});

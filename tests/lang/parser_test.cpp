@@ -157,6 +157,16 @@ TEST(Parser, CallsWithNamedArguments) {
   EXPECT_EQ(span_text(text, cam.value->span), text.substr(14));
 }
 
+// (x, y) is the point (x, y, 0): a vector whose third component is a 0 spanning the literal.
+TEST(Parser, TwoComponentVectorIsAPointOfTheXyPlane) {
+  EXPECT_EQ(ast("let p = (1, 2 + a)"), "(let p (vec 1 (+ 2 a) 0))");
+  const std::string text = "let p = (3, 4)";
+  const Script script = parse_ok(text);
+  const auto& vec = std::get<VectorLit>(std::get<LetStmt>(script.statements.at(0).node).value->node);
+  EXPECT_EQ(std::get<NumberLit>(vec.components[2]->node).value, 0);
+  EXPECT_EQ(span_text(text, vec.components[2]->span), "(3, 4)");
+}
+
 TEST(Parser, OneLineForLoop) {
   const Script script = parse_ok("for i in 0..4 { draw post(1 + i) at translate(2*i, 0, 0) }");
   const auto& loop = std::get<ForStmt>(script.statements.at(0).node);

@@ -187,6 +187,19 @@ TEST(BuiltinsCameras, SameCamerasAsCore) {
   EXPECT_EQ(scene.cameras[3].name, "d");
 }
 
+// Desens' image offset is a 2-D value: (yoff, zoff), or the list [yoff, zoff]; a third number is an error.
+TEST(BuiltinsCameras, DesensOffsetIsATwoDimensionalValue) {
+  const std::string c = "desens(object: (126, 0, 0), observer: (1914, 151, 112.5), scale: 0.5, offset: ";
+  const FrameScene scene = test::run_ok("camera a = " + c + "(1, -2))\ncamera b = " + c + "[1, -2])\n");
+  ASSERT_EQ(scene.cameras.size(), 2U);
+  EXPECT_EQ(scene.cameras[0].camera.offset.x, 2);  // the offset in picture units: 1 / scale
+  EXPECT_EQ(scene.cameras[0].camera.offset.y, -4);
+  EXPECT_EQ(scene.cameras[1].camera.offset.x, 2);
+  EXPECT_EQ(scene.cameras[1].camera.offset.y, -4);
+  EXPECT_EQ(test::first_error("camera a = " + c + "(1, 2, 3))\n"),
+            "1:90: bad argument 'offset' to desens(): must be two numbers (yoff, zoff), got a third one");
+}
+
 TEST(BuiltinsTable, EverySpecBuiltinIsRegistered) {
   for (const char* name :
        {"sin",      "cos",    "tan",    "asin",       "acos",     "atan",     "atan2",     "sqrt",

@@ -41,8 +41,8 @@ std::string lblock_script(const std::string& view) {
       ",\n                       observer: " +
       vec(p.observer_position.x, p.observer_position.y, p.observer_position.z) +
       ", heading: " + vec(p.heading.x, p.heading.y, p.heading.z) +
-      ",\n                       focal: " + num(p.focal) + ", scale: " + num(p.scale) + ", offset: [" +
-      num(p.offset.x) + ", " + num(p.offset.y) + "], thesis_pi: true)\n";
+      ",\n                       focal: " + num(p.focal) + ", scale: " + num(p.scale) + ", offset: (" +
+      num(p.offset.x) + ", " + num(p.offset.y) + "), thesis_pi: true)\n";
   return s;
 }
 

@@ -9,6 +9,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "runtime/interrupt.hpp"
 #include "tests/runtime/cli_run.hpp"
 #include "tests/runtime/runtime_test_support.hpp"
 
@@ -146,6 +147,79 @@ TEST(ReplSession, CompletionOffersBuiltinsNamesAndCommands) {
   EXPECT_EQ(s.completions(":sh", ":sh"), (std::vector<std::string>{":show"}));
   EXPECT_EQ(s.completions("ani", "ani"), (std::vector<std::string>{"animate"}));
   EXPECT_TRUE(s.completions(":load ex", "ex").empty());  // file names: libedit's own completion
+}
+
+TEST(ReplSession, CompletionInsideACallOffersItsParameterNamesFirst) {
+  ReplSession s;
+  EXPECT_EQ(s.completions("camera c = lookat(", ""),
+            (std::vector<std::string>{"eye:", "target:", "up:", "fov:", "aspect:", "near:"}));
+  // After an argument, with a word begun: the parameters, then what an expression may use.
+  EXPECT_EQ(s.completions("camera c = lookat(eye: (1, 2, 3), f", "f"),
+            (std::vector<std::string>{"fov:", "face", "floor", "for"}));
+  // Inside a nested call, the inner one's; after it closed, the outer one's again.
+  EXPECT_EQ(s.completions("draw box(size: vec(", "")[0], "x:");
+  EXPECT_EQ(s.completions("draw sphere(2, sl", "sl"), (std::vector<std::string>{"slices:"}));
+  // The session's own functions.
+  feed_all(s, {"def post(height, width = 1) = box(width, width, height)"});
+  EXPECT_EQ(s.completions("draw post(h", "h"), (std::vector<std::string>{"height:", "heightfield", "hexahedron", "hole"}));
+  // A file name after import(": libedit's own completion.
+  EXPECT_TRUE(s.completions("let m = import(\"b", "b").empty());
+}
+
+TEST(ReplSession, HelpOnABuiltinAStatementOrACommand) {
+  ReplSession s;
+  const std::string lookat = s.feed(":help lookat").text;
+  EXPECT_EQ(lookat.substr(0, lookat.find('\n')),
+            "lookat(eye:, target:, up: (0, 0, 1), fov: 40, aspect:, near:)");
+  EXPECT_NE(
+      lookat.find("\n  parameters: eye (a vector), target (a vector), up = (0, 0, 1) (a vector), fov = 40 "
+                  "(a number), aspect (a number, optional), near (a number, optional)\n"),
+      std::string::npos)
+      << lookat;
+  EXPECT_EQ(s.feed(":help draw").text.substr(0, 34), "draw EXPR [at TRANSFORM] [pen N]\n ");
+  EXPECT_EQ(
+      s.feed(":help :orbit").text,
+      ":orbit DTHETA [DPHI]\n  step the camera round the scene (degrees; Albers' theta and phi keys)\n");
+  // A word that is a statement and a command: both.
+  const std::string camera = s.feed(":help camera").text;
+  EXPECT_NE(camera.find(":camera [NAME]"), std::string::npos);
+  EXPECT_NE(camera.find("camera NAME = EXPR"), std::string::npos);
+  const ReplReply unknown = s.feed(":help bx");
+  EXPECT_EQ(unknown.kind, ReplReply::Kind::Error);
+  EXPECT_EQ(unknown.text.substr(0, unknown.text.find('\n')), "no help on 'bx'; did you mean 'box'?");
+  EXPECT_EQ(s.completions(":help cyl", "cyl"), (std::vector<std::string>{"cylinder"}));
+}
+
+// A terminal that speaks sixel or kitty graphics gets the real picture (its pixels are checked in
+// terminal_graphics_test.cpp); the line under it is the same.
+TEST(ReplSession, ShowSendsTheRealPictureToGraphicsTerminals) {
+  ReplSession s({40, 12});
+  feed_all(s, {"draw cube(2)", "camera main = lookat(eye: (6, -8, 5), target: (0, 0, 0))"});
+  const std::string braille = s.feed(":show").text;
+  const std::string caption = braille.substr(braille.rfind("camera main"));
+  s.set_graphics(TerminalGraphics::Sixel, {160, 120});
+  const std::string sixel = s.feed(":show").text;
+  EXPECT_EQ(sixel.substr(0, 3), "\x1bPq");
+  EXPECT_EQ(sixel.substr(sixel.size() - caption.size()), caption);
+  s.set_graphics(TerminalGraphics::Kitty, {160, 120});
+  EXPECT_EQ(s.feed(":show").text.substr(0, 3), "\x1b_G");
+}
+
+// Ctrl-C sets interrupt_requested() (runtime/repl.cpp's SIGINT handler); the work under way stops and the
+// session is as it was.
+TEST(ReplSession, AnInterruptStopsTheWorkAndChangesNothing) {
+  ReplSession s({40, 12});
+  feed_all(s, {"draw cube(2)", "camera main = lookat(eye: (6, -8, 5), target: (0, 0, 0))"});
+  const std::string before = s.script();
+  const std::string picture = s.feed(":show").text;
+  interrupt_requested() = true;
+  EXPECT_EQ(s.feed(":show").text, "stopped (Ctrl-C); the session is as it was\n");
+  EXPECT_EQ(s.feed(":orbit 30").text, "stopped (Ctrl-C); the session is as it was\n");
+  EXPECT_EQ(s.feed("draw sphere(1) at translate(3, 0, 0)").text,
+            "stopped (Ctrl-C); the session is as it was\n");
+  interrupt_requested() = false;
+  EXPECT_EQ(s.script(), before);
+  EXPECT_EQ(s.feed(":show").text, picture);  // the orbit that was stopped left the camera alone
 }
 
 class ReplFiles : public ::testing::Test {
