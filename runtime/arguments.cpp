@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "core/format_number.hpp"
+#include "runtime/eval_detail.hpp"
 #include "runtime/eval_error.hpp"
 #include "runtime/format_value.hpp"
 #include "runtime/source_table.hpp"
@@ -30,8 +31,11 @@ std::vector<int> match_arguments(const CallSite& site, const std::vector<Arg>& a
     }
     std::size_t p = 0;
     while (p < names.size() && names[p] != arg.label) ++p;
-    if (p == names.size())
-      fail(arg.label_span, "unknown argument '" + arg.label + "' to " + who(), std::string(site.signature));
+    if (p == names.size()) {
+      const std::string guess = did_you_mean(arg.label, std::vector<std::string>(names.begin(), names.end()));
+      fail(arg.label_span, "unknown argument '" + arg.label + "' to " + who(),
+           (guess.empty() ? "" : guess + " ") + std::string(site.signature));
+    }
     if (slots[p] >= 0)
       fail(arg.label_span, "argument '" + arg.label + "' to " + who() + " is given twice",
            std::string(site.signature));

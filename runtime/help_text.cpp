@@ -92,7 +92,7 @@ std::vector<std::string> language_help_topics() {
 std::string builtin_reference() {
   std::string out =
       "# hlrscript built-ins\n\n"
-      "Generated from the built-ins' registration tables by `hlrscript help --reference` (the REPL's\n"
+      "Generated from the built-ins' registration tables by `hlrscript help reference` (the REPL's\n"
       "`:help NAME` prints the same entries); a test checks that this file is current. Angles are in\n"
       "degrees. A parameter with `= value` may be left out; `optional` ones have no default.\n\n"
       "## Statements\n\n";
@@ -103,16 +103,18 @@ std::string builtin_reference() {
     // The first line is the signature; the rest, indented by two, become the entry's text.
     const std::size_t newline = help->find('\n');
     out += "### " + name + "\n\n`" + help->substr(0, newline) + "`\n\n";
-    std::string rest = help->substr(newline + 1);
-    std::size_t at = 0;
-    while (at < rest.size()) {
+    // The summary as a paragraph, the parameter lists under it as a list.
+    const std::string rest = help->substr(newline + 1);
+    bool summary = true;
+    for (std::size_t at = 0; at < rest.size();) {
       const std::size_t end = rest.find('\n', at);
       std::string line = rest.substr(at, end - at);
       line.erase(0, line.find_first_not_of(' '));
-      out += line + "\n";
+      out += (summary ? "" : "- ") + line + (summary ? "\n\n" : "\n");
+      summary = false;
       at = end + 1;
     }
-    out += "\n";
+    if (!summary) out += "\n";
   }
   return out;
 }

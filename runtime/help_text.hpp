@@ -1,6 +1,6 @@
 // Help on the language, from the tables the evaluator runs on: the built-ins' registration rows
 // (signature, summary, the parameter lists they bind) and the statements' forms. The REPL's `:help
-// TOPIC`, `hlrscript help TOPIC` and runtime/BUILTINS.md (`hlrscript help --reference`) all print these.
+// TOPIC`, `hlrscript help TOPIC` and runtime/BUILTINS.md (`hlrscript help reference`) all print these.
 #pragma once
 
 #include <optional>

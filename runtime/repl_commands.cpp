@@ -42,6 +42,7 @@ const Command kCommands[] = {
     {"zoom", ":zoom F", "magnify the picture F times"},
     {"dolly", ":dolly D", "move the eye D scene units forward along the view"},
     {"frame", ":frame N", "look at frame N of the animation"},
+    {"frames", ":frames", "how many frames the animation has, at what rate, and the one looked at"},
     {"hidden", ":hidden on|off", "draw hidden lines dashed, or not"},
     {"stats", ":stats", "faces, edges, visible pieces, pen plan, render time of the current frame"},
     {"scene", ":scene", "what is drawn, with sizes, and the cameras"},
@@ -112,6 +113,7 @@ ReplReply ReplSession::command(const std::string& line) {
     }
     return done("drawing with camera " + arg + "\n");
   }
+  if (cmd == "frames") return frames();
   if (cmd == "frame") {
     char* end = nullptr;
     const long n = std::strtol(arg.c_str(), &end, 10);

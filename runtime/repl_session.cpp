@@ -353,6 +353,20 @@ ReplReply ReplSession::scene() {
   }
 }
 
+ReplReply ReplSession::frames() {
+  const auto program = session_program(join(chunks_), loaded_);
+  try {
+    const FrameScene first = evaluate_frame(*program, 0);
+    if (!first.animation) return done("one frame (no animate statement); :frame 0 is the drawing\n");
+    const int n = first.animation->frames;
+    return done(std::to_string(n) + " frames at " + format_number(first.animation->fps) +
+                " fps (frame 0 to " + std::to_string(n - 1) + "); looking at frame " +
+                std::to_string(frame_) + ", :frame N for another\n");
+  } catch (const EvalError& e) {
+    return error(e.diagnostics.empty() ? e.what() : diagnostics_text(e.diagnostics, *program));
+  }
+}
+
 std::string ReplSession::script() const {
   std::vector<Chunk> chunks = chunks_;
   std::string tail;

@@ -68,6 +68,7 @@ class ReplSession {
   ReplReply show();
   ReplReply stats();
   ReplReply scene();
+  ReplReply frames();
   ReplReply render(const std::string& file);
   ReplReply save(const std::string& file);
   ReplReply step_camera(const std::string& command, const std::string& arguments);

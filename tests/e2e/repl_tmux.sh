@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# The REPL in a real terminal (tmux): Tab completion, a continuation line, Ctrl-C cancelling it, :show,
-# an error followed by a correct line, history kept across sessions. Usage: repl_tmux.sh HLRSCRIPT WORKDIR
+# The REPL in a real terminal (tmux): Tab completion (names, a call's parameters), a continuation line,
+# Ctrl-C cancelling it, :show, an error followed by a correct line, history kept across sessions, :help,
+# Ctrl-C stopping a long render. Usage: repl_tmux.sh HLRSCRIPT WORKDIR
 set -euo pipefail
 hlrscript=$(realpath "$1")
 work=$2
@@ -59,7 +60,23 @@ tmux -S "$socket" new-session -d -s "$session" -x 100 -y 40 -c "$work" "$hlrscri
 expect "hls>"
 keys Up
 expect ":save saved.hls"
-keys C-u ':quit' Enter
+# Tab inside a call completes the built-in's parameter names; :help shows a built-in's forms.
+keys C-u 'let cam = lookat(ey' Tab
+expect "lookat(eye:"
+keys C-u ':help box' Enter
+expect "box(sx, sy, sz) | box(min: p, max: q)"
+# Ctrl-C stops a long render; the session stays and keeps what it had.
+keys 'for i in 0..6 { for j in 0..6 { draw sphere(1, slices: 300, stacks: 150) at translate(1.2 * i, 1.2 * j, 0.3 * ((i + j) % 3)) } }' Enter
+expect "scene: 36 objects"
+keys 'camera c = lookat(eye: (3, -14, 8), target: (3, 3, 0))' Enter
+expect "camera c"
+keys ':show' Enter
+sleep 0.5
+keys C-c
+expect "stopped (Ctrl-C); the session is as it was"
+keys ':scene' Enter
+expect "cameras: c; frame 0"
+keys ':quit' Enter
 # The saved script renders.
 "$hlrscript" "$work/saved.hls" -o "$work/saved.pdf" >/dev/null
 test -s "$work/saved.pdf"

@@ -138,6 +138,12 @@ TEST(ReplSession, CommandsByUnambiguousPrefix) {
   EXPECT_NE(s.feed(":show").text.find("camera main = lookat("), std::string::npos);
   EXPECT_EQ(s.feed(":hidden maybe").kind, ReplReply::Kind::Error);
   EXPECT_EQ(s.feed(":frame 3").kind, ReplReply::Kind::Error);  // one frame only
+  EXPECT_EQ(s.feed(":frames").text, "one frame (no animate statement); :frame 0 is the drawing\n");
+  EXPECT_EQ(s.feed(":fr").text, "':fr' could be :frame, :frames\n");
+  s.feed("animate frames 12 fps 6");
+  EXPECT_EQ(s.feed(":frame 5").kind, ReplReply::Kind::Done);
+  EXPECT_EQ(s.feed(":frames").text,
+            "12 frames at 6 fps (frame 0 to 11); looking at frame 5, :frame N for another\n");
 }
 
 TEST(ReplSession, CompletionOffersBuiltinsNamesAndCommands) {
@@ -161,7 +167,8 @@ TEST(ReplSession, CompletionInsideACallOffersItsParameterNamesFirst) {
   EXPECT_EQ(s.completions("draw sphere(2, sl", "sl"), (std::vector<std::string>{"slices:"}));
   // The session's own functions.
   feed_all(s, {"def post(height, width = 1) = box(width, width, height)"});
-  EXPECT_EQ(s.completions("draw post(h", "h"), (std::vector<std::string>{"height:", "heightfield", "hexahedron", "hole"}));
+  EXPECT_EQ(s.completions("draw post(h", "h"),
+            (std::vector<std::string>{"height:", "heightfield", "hexahedron", "hole"}));
   // A file name after import(": libedit's own completion.
   EXPECT_TRUE(s.completions("let m = import(\"b", "b").empty());
 }

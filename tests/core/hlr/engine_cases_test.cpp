@@ -670,5 +670,18 @@ TEST(EngineCasesFrame, LookatFrameClipsExactly) {
   EXPECT_EQ(on_frame, 2 + 2 + 6);
 }
 
+// A cancel flag that is set stops the frame (the REPL's Ctrl-C); one that is clear changes nothing.
+TEST(EngineCases, ACancelFlagStopsTheFrame) {
+  const Scene scene = scene_of({stdlib::box({-2, 2, -2}, {2, 3, 2}), stdlib::box({1, 0, -0.5}, {3, 1, 0.5})});
+  const Camera camera = lookat({4, -9, 3}, {0, 1, 0});
+  std::atomic<bool> cancel{false};
+  HlrOptions options;
+  options.cancel = &cancel;
+  const FrameResult plain = render_frame(scene, camera);
+  EXPECT_EQ(render_frame(scene, camera, options).segments.size(), plain.segments.size());
+  cancel = true;
+  EXPECT_THROW(render_frame(scene, camera, options), RenderCancelled);
+}
+
 }  // namespace
 }  // namespace hlr
