@@ -9,6 +9,8 @@ namespace hlr::runtime {
 
 namespace {
 
+constexpr std::size_t kShownValueLength = 60;  // a default or a constant, as help shows it
+
 struct StatementHelp {
   const char* keyword;
   const char* form;
@@ -49,7 +51,7 @@ const BuiltinFunction* builtin_function(const std::string& name) {
 // "eye (a vector)", "fov = 40 (a number)", "aspect (a number, optional)".
 std::string param_text(const Param& p) {
   std::string s(p.name);
-  if (!p.fallback.is_none()) s += " = " + display(p.fallback, 60);
+  if (!p.fallback.is_none()) s += " = " + display(p.fallback, kShownValueLength);
   s += " (" + (p.kinds == kAnyKind ? std::string("any value") : describe_kinds(p.kinds));
   if (!p.required && p.fallback.is_none()) s += ", optional";
   return s + ")";
@@ -77,7 +79,7 @@ std::optional<std::string> language_help(const std::string& topic) {
   for (const StatementHelp& s : kStatements)
     if (topic == s.keyword) return std::string(s.form) + "\n  " + s.help + "\n";
   const Value* v = builtins().find(topic);
-  if (v && !v->is(ValueKind::Function)) return topic + " = " + display(*v, 60) + " (a built-in constant)\n";
+  if (v && !v->is(ValueKind::Function)) return topic + " = " + display(*v, kShownValueLength) + " (a built-in constant)\n";
   if (const BuiltinFunction* f = builtin_function(topic)) return builtin_help(topic, *f);
   return std::nullopt;
 }

@@ -16,6 +16,7 @@
 #include <iterator>
 #include <stdexcept>
 
+#include "core/device/cairo_handles.hpp"
 #include "core/geometry/clip2d.hpp"
 #include "core/tolerance.hpp"
 #include "runtime/terminal_picture.hpp"
@@ -170,20 +171,6 @@ constexpr double kHiddenGrey = 0.45;
 // Sixel has two colours: a pixel is ink when darker than this (hidden grey included).
 constexpr double kInkThreshold = 0.7;
 
-struct SurfaceRef {
-  cairo_surface_t* p;
-  ~SurfaceRef() { cairo_surface_destroy(p); }
-};
-struct ContextRef {
-  cairo_t* p;
-  ~ContextRef() { cairo_destroy(p); }
-};
-
-void check(cairo_status_t status) {
-  if (status != CAIRO_STATUS_SUCCESS)
-    throw std::runtime_error(std::string("cairo: ") + cairo_status_to_string(status));
-}
-
 // Adds the segments whose hidden flag is `hidden` to the path, clipped to a little more than the
 // surface so that cairo's fixed-point coordinates never overflow.
 void add_segments(cairo_t* cr, const std::vector<VisibleSegment>& segments, const PictureFit& fit,
@@ -204,7 +191,7 @@ void add_segments(cairo_t* cr, const std::vector<VisibleSegment>& segments, cons
 // Sixel wants hard pixels; the PNG may be smooth.
 void draw(cairo_surface_t* surface, const std::vector<VisibleSegment>& segments,
           const std::optional<Rect2>& frame, int width, int height, bool antialias) {
-  ContextRef cr{cairo_create(surface)};
+  CairoContext cr{cairo_create(surface)};
   cairo_set_source_rgb(cr.p, 1, 1, 1);
   cairo_paint(cr.p);
   const PictureFit fit = fit_picture(segments, frame, width - 2 * kMarginPx, height - 2 * kMarginPx);
@@ -223,13 +210,8 @@ void draw(cairo_surface_t* surface, const std::vector<VisibleSegment>& segments,
     add_segments(cr.p, segments, fit, false, width, height);
     cairo_stroke(cr.p);
   }
-  check(cairo_status(cr.p));
+  check_cairo(cairo_status(cr.p));
   cairo_surface_flush(surface);
-}
-
-cairo_status_t append_to_string(void* closure, const unsigned char* data, unsigned int length) {
-  static_cast<std::string*>(closure)->append(reinterpret_cast<const char*>(data), length);
-  return CAIRO_STATUS_SUCCESS;
 }
 
 constexpr char kBase64Alphabet[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
@@ -264,11 +246,11 @@ constexpr std::size_t kKittyChunk = 4096;
 
 std::string kitty_image(const std::vector<VisibleSegment>& segments, const std::optional<Rect2>& frame,
                         int width, int height) {
-  SurfaceRef surface{cairo_image_surface_create(CAIRO_FORMAT_RGB24, width, height)};
-  check(cairo_surface_status(surface.p));
+  CairoSurface surface{cairo_image_surface_create(CAIRO_FORMAT_RGB24, width, height)};
+  check_cairo(cairo_surface_status(surface.p));
   draw(surface.p, segments, frame, width, height, true);
   std::string png;
-  check(cairo_surface_write_to_png_stream(surface.p, append_to_string, &png));
+  check_cairo(cairo_surface_write_to_png_stream(surface.p, append_to_string, &png));
   const std::string data = base64(png);
   std::string out;
   for (std::size_t at = 0; at < data.size(); at += kKittyChunk) {
@@ -302,8 +284,8 @@ void put_run(std::string& out, char c, int n) {
 
 std::string sixel_image(const std::vector<VisibleSegment>& segments, const std::optional<Rect2>& frame,
                         int width, int height) {
-  SurfaceRef surface{cairo_image_surface_create(CAIRO_FORMAT_RGB24, width, height)};
-  check(cairo_surface_status(surface.p));
+  CairoSurface surface{cairo_image_surface_create(CAIRO_FORMAT_RGB24, width, height)};
+  check_cairo(cairo_surface_status(surface.p));
   draw(surface.p, segments, frame, width, height, false);
   const unsigned char* data = cairo_image_surface_get_data(surface.p);
   const int stride = cairo_image_surface_get_stride(surface.p);
@@ -368,26 +350,6 @@ TerminalGraphics detect_terminal_graphics(int in_fd, int out_fd) {
   query += kDa1Query;
   if (!write_all(out_fd, query)) return TerminalGraphics::Braille;
   return parse_graphics_reply(read_reply(in_fd));
-}
-
-PictureFit fit_picture(const std::vector<VisibleSegment>& segments, const std::optional<Rect2>& frame,
-                       double width, double height) {
-  PictureFit fit;
-  if (frame && !frame->empty()) {
-    fit.box = *frame;
-  } else {
-    for (const VisibleSegment& s : segments) {
-      fit.box.include(s.s0);
-      fit.box.include(s.s1);
-    }
-  }
-  if (fit.box.empty()) return fit;
-  const double bw = std::max(fit.box.width(), Tolerance::kFloor),
-               bh = std::max(fit.box.height(), Tolerance::kFloor);
-  fit.scale = std::min(width / bw, height / bh);
-  fit.ox = (width - fit.scale * bw) / 2;
-  fit.oy = (height - fit.scale * bh) / 2;
-  return fit;
 }
 
 std::string terminal_image(const std::vector<VisibleSegment>& segments, const std::optional<Rect2>& frame,

@@ -10,6 +10,7 @@
 
 #include "core/geometry/rect2.hpp"
 #include "core/hlr/visible_segment.hpp"
+#include "runtime/terminal_picture.hpp"
 
 namespace hlr::runtime {
 
@@ -35,17 +36,6 @@ TerminalGraphics parse_graphics_reply(std::string_view reply);
 // Braille unless both descriptors are terminals and not inside tmux or screen; then the terminal is
 // asked (kitty graphics query, then DA1) and its reply parsed, waiting at most about a quarter second.
 TerminalGraphics detect_terminal_graphics(int in_fd, int out_fd);
-
-// The placement of picture coordinates (x right, y up) in a width × height area (x right, y down):
-// the box — `frame` when given and not empty, else the segments' bounds — scaled to fit, keeping its
-// proportions, and centred. Empty `box` when there is nothing to fit.
-struct PictureFit {
-  Rect2 box = Rect2::none();
-  double scale = 1, ox = 0, oy = 0;
-  Point2 map(Point2 p) const { return {ox + (p.x - box.xmin) * scale, oy + (box.ymax - p.y) * scale}; }
-};
-PictureFit fit_picture(const std::vector<VisibleSegment>& segments, const std::optional<Rect2>& frame,
-                       double width, double height);
 
 // The escape sequence that shows the drawing (black lines on white, hidden pieces dashed — and grey in
 // the PNG; sixel has only black and white),

@@ -38,6 +38,26 @@ void put_utf8(std::string& out, unsigned cp) {
 
 }  // namespace
 
+PictureFit fit_picture(const std::vector<VisibleSegment>& segments, const std::optional<Rect2>& frame,
+                       double width, double height) {
+  PictureFit fit;
+  if (frame && !frame->empty()) {
+    fit.box = *frame;
+  } else {
+    for (const VisibleSegment& s : segments) {
+      fit.box.include(s.s0);
+      fit.box.include(s.s1);
+    }
+  }
+  if (fit.box.empty()) return fit;
+  const double bw = std::max(fit.box.width(), Tolerance::kFloor),
+               bh = std::max(fit.box.height(), Tolerance::kFloor);
+  fit.scale = std::min(width / bw, height / bh);
+  fit.ox = (width - fit.scale * bw) / 2;
+  fit.oy = (height - fit.scale * bh) / 2;
+  return fit;
+}
+
 std::string braille_picture(const std::vector<VisibleSegment>& segments, const std::optional<Rect2>& frame,
                             int columns, int rows) {
   columns = std::clamp(columns, 1, 1000);
@@ -45,23 +65,13 @@ std::string braille_picture(const std::vector<VisibleSegment>& segments, const s
   const int width = 2 * columns, height = 4 * rows;
   std::vector<std::uint8_t> cells(static_cast<std::size_t>(columns) * static_cast<std::size_t>(rows), 0);
 
-  Rect2 box = Rect2::none();
-  if (frame && !frame->empty()) {
-    box = *frame;
-  } else {
-    for (const VisibleSegment& s : segments) {
-      box.include(s.s0);
-      box.include(s.s1);
-    }
-  }
-  if (!box.empty()) {
-    const double bw = std::max(box.width(), Tolerance::kFloor),
-                 bh = std::max(box.height(), Tolerance::kFloor);
-    const double scale = std::min((width - 1) / bw, (height - 1) / bh);
-    const double ox = (width - 1 - scale * bw) / 2, oy = (height - 1 - scale * bh) / 2;
+  // Dot centres run from 0 to width − 1: the picture fits that span.
+  const PictureFit fit = fit_picture(segments, frame, width - 1, height - 1);
+  if (!fit.box.empty()) {
+    const double scale = fit.scale;
     auto dot = [&](double x, double y) {  // picture (x right, y up) → a dot, y down
-      const long dx = std::lround(ox + (x - box.xmin) * scale);
-      const long dy = std::lround(oy + (box.ymax - y) * scale);
+      const Point2 at = fit.map({x, y});
+      const long dx = std::lround(at.x), dy = std::lround(at.y);
       if (dx < 0 || dy < 0 || dx >= width || dy >= height) return;
       cells[static_cast<std::size_t>(dy / 4) * static_cast<std::size_t>(columns) +
             static_cast<std::size_t>(dx / 2)] |= kDotBit[dy % 4][dx % 2];

@@ -13,6 +13,7 @@
 #include <string_view>
 
 #include "core/device/atomic_file.hpp"
+#include "core/device/cairo_handles.hpp"
 #include "core/device/page_layout.hpp"
 #include "core/device/page_style.hpp"
 #include "core/device/pdf_writer.hpp"
@@ -32,21 +33,6 @@ const char* format_name(CairoFormat f) {
       return "PNG";
   }
   return "?";
-}
-
-// Owners, so that an exception part-way never leaks a surface or context.
-struct SurfaceRef {
-  cairo_surface_t* p;
-  ~SurfaceRef() { cairo_surface_destroy(p); }
-};
-struct ContextRef {
-  cairo_t* p;
-  ~ContextRef() { cairo_destroy(p); }
-};
-
-void check(cairo_status_t status) {
-  if (status != CAIRO_STATUS_SUCCESS)
-    throw std::runtime_error(std::string("cairo: ") + cairo_status_to_string(status));
 }
 
 // Everything that can be wrong with a page is found before any file exists.
@@ -154,25 +140,20 @@ void draw_page(cairo_t* cr, const PlotPage& page, const CairoOptions& o, double 
 template <typename BeforePage>
 void draw_all(cairo_surface_t* surface, std::span<const PlotPage> pages, const CairoOptions& o,
               double units_per_mm, BeforePage before_page) {
-  check(cairo_surface_status(surface));
+  check_cairo(cairo_surface_status(surface));
   {
-    ContextRef cr{cairo_create(surface)};
+    CairoContext cr{cairo_create(surface)};
     for (const PlotPage& page : pages) {
       before_page(cr.p, page);
       draw_page(cr.p, page, o, units_per_mm);
       if (o.format != CairoFormat::Png) cairo_show_page(cr.p);
     }
-    check(cairo_status(cr.p));
+    check_cairo(cairo_status(cr.p));
   }
   if (o.format != CairoFormat::Png) {
     cairo_surface_finish(surface);  // writes the file's tail; errors surface here
-    check(cairo_surface_status(surface));
+    check_cairo(cairo_surface_status(surface));
   }
-}
-
-cairo_status_t append_to_string(void* closure, const unsigned char* data, unsigned int length) {
-  static_cast<std::string*>(closure)->append(reinterpret_cast<const char*>(data), length);
-  return CAIRO_STATUS_SUCCESS;
 }
 
 // cairo names an SVG's groups after its surfaces' serial numbers, which count every surface the process
@@ -203,9 +184,9 @@ std::string renumber_surface_ids(const std::string& svg) {
 std::string svg_bytes(const PlotPage& page, const CairoOptions& o) {
   std::string bytes;
   // In cairo ≥ 1.16 the document unit makes the size given here millimetres and one user unit 1 mm.
-  SurfaceRef surface{
+  CairoSurface surface{
       cairo_svg_surface_create_for_stream(append_to_string, &bytes, page.width_mm, page.height_mm)};
-  check(cairo_surface_status(surface.p));
+  check_cairo(cairo_surface_status(surface.p));
   cairo_svg_surface_set_document_unit(surface.p, CAIRO_SVG_UNIT_MM);
   draw_all(surface.p, std::span(&page, 1), o, 1, [](cairo_t*, const PlotPage&) {});
   return renumber_surface_ids(bytes);
@@ -213,8 +194,8 @@ std::string svg_bytes(const PlotPage& page, const CairoOptions& o) {
 
 std::string png_bytes(const PlotPage& page, const CairoOptions& o) {
   const PixelSize size = png_pixel_size(page, o.dpi);
-  SurfaceRef surface{cairo_image_surface_create(CAIRO_FORMAT_ARGB32, static_cast<int>(size.width),
-                                                static_cast<int>(size.height))};
+  CairoSurface surface{cairo_image_surface_create(CAIRO_FORMAT_ARGB32, static_cast<int>(size.width),
+                                                  static_cast<int>(size.height))};
   draw_all(surface.p, std::span(&page, 1), o, o.dpi / kMmPerInch, [&](cairo_t* cr, const PlotPage&) {
     if (!o.white_background) return;  // a new image surface is transparent
     cairo_set_source_rgb(cr, 1, 1, 1);
@@ -222,7 +203,7 @@ std::string png_bytes(const PlotPage& page, const CairoOptions& o) {
   });
   cairo_surface_flush(surface.p);
   std::string bytes;
-  check(cairo_surface_write_to_png_stream(surface.p, append_to_string, &bytes));
+  check_cairo(cairo_surface_write_to_png_stream(surface.p, append_to_string, &bytes));
   return bytes;
 }
 
