@@ -54,6 +54,10 @@ struct Tolerance {
     return Tolerance{kRelative * std::max(std::abs(extent), kFloor)};
   }
 
+  // ---- Paths (core/animation): a tangent is a difference quotient over this fraction of one stretch
+  // between two points — small against the stretch, large against the 1e-16 rounding of u.
+  static constexpr double kPathTangentStep = 1e-4;
+
   // ---- Cameras: near planes (perspective). Only keep 1/depth defined; none cuts a visible object.
   // Camera's default near depth, in view depth units, when its constructor sets none.
   static constexpr double kDefaultNearDepth = 1e-3;

@@ -13,6 +13,7 @@
 #include "core/geometry/vector.hpp"
 #include "lang/source.hpp"
 #include "runtime/budget.hpp"
+#include "runtime/frame_time.hpp"
 #include "runtime/value.hpp"
 
 namespace hlr::runtime {
@@ -56,14 +57,17 @@ class Bound;
 // A built-in's view of its call.
 class CallArgs {
  public:
-  CallArgs(CallSite site, std::vector<Arg> args, Budget& budget, const SourceTable* sources = nullptr)
-      : site_(std::move(site)), args_(std::move(args)), budget_(budget), sources_(sources) {}
+  CallArgs(CallSite site, std::vector<Arg> args, Budget& budget, const SourceTable* sources = nullptr,
+           const FrameTime* time = nullptr)
+      : site_(std::move(site)), args_(std::move(args)), budget_(budget), sources_(sources), time_(time) {}
 
   const CallSite& site() const { return site_; }
   const std::vector<Arg>& args() const { return args_; }
   std::size_t positional_count() const;
   bool has_label(std::string_view label) const;
   Budget& budget() const { return budget_; }
+  // Where in the sequence the frame being evaluated is (frame 0 of 1 when not known).
+  FrameTime time() const { return time_ ? *time_ : FrameTime{}; }
   // The directory of the file the call is written in: built-ins that read files (import) resolve
   // relative paths against it. The working directory when unknown.
   std::filesystem::path script_directory() const;
@@ -82,6 +86,7 @@ class CallArgs {
   std::vector<Arg> args_;
   Budget& budget_;
   const SourceTable* sources_;
+  const FrameTime* time_;
 };
 
 // Arguments matched to parameters, with typed accessors that check values ("must be positive").

@@ -46,6 +46,7 @@ const BuiltinTable& builtins() {
     register_shape_builtins(t);
 
     register_camera_builtins(t);
+    register_animation_builtins(t);
     register_import_builtins(t);
     return t;
   }();

@@ -3,11 +3,13 @@
 // succeeded. Errors become exit statuses here and nowhere else.
 #include "runtime/cli.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <ctime>
 #include <filesystem>
+#include <iterator>
 #include <ostream>
 #include <sstream>
 
@@ -17,8 +19,10 @@
 #include "runtime/eval_error.hpp"
 #include "runtime/frame_pipeline.hpp"
 #include "runtime/help_text.hpp"
+#include "runtime/interrupt.hpp"
 #include "runtime/output_plan.hpp"
 #include "runtime/program.hpp"
+#include "runtime/progress_line.hpp"
 
 namespace hlr::runtime {
 
@@ -54,6 +58,31 @@ int report(std::ostream& err, const RunError& e) {
   err << "hlrscript: error: " << e.what() << "\n";
   if (!e.hint.empty()) err << "hint: " << e.hint << "\n";
   return e.exit_code;
+}
+
+// "0-11,14,20-23": frame numbers in increasing order as --frames takes them.
+std::string frame_list_text(const std::vector<int>& frames) {
+  std::string out;
+  for (std::size_t i = 0; i < frames.size();) {
+    std::size_t j = i;
+    while (j + 1 < frames.size() && frames[j + 1] == frames[j] + 1) ++j;
+    out += (out.empty() ? "" : ",") + std::to_string(frames[i]) +
+           (j > i ? "-" + std::to_string(frames[j]) : std::string());
+    i = j + 1;
+  }
+  return out;
+}
+
+int report(std::ostream& err, const RunInterrupted& e, const std::vector<int>& asked) {
+  std::vector<int> rest;
+  std::set_difference(asked.begin(), asked.end(), e.frames_done.begin(), e.frames_done.end(),
+                      std::back_inserter(rest));
+  err << "hlrscript: interrupted after " << e.frames_done.size() << " of " << asked.size() << " frames"
+      << (e.frames_done.empty() ? "" : " (" + frame_list_text(e.frames_done) + ")") << "; kept "
+      << e.files.size() << (e.files.size() == 1 ? " complete file" : " complete files")
+      << (e.removed_partial ? ", removed the one still being written" : "") << "\n";
+  if (!rest.empty()) err << "hint: --frames " << frame_list_text(rest) << " renders the rest\n";
+  return kExitInterrupted;
 }
 
 void print_stats(std::ostream& err, const PipelineResult& result) {
@@ -113,11 +142,14 @@ std::string creation_date_from_environment() {
 int run_program(const Program& program, const CliOptions& o, std::ostream& out, std::ostream& err,
                 Clock::time_point start) {
   const std::string& name = program.main().source->name();
+  ProgressLine progress(err, o.progress);
+  std::vector<int> asked;  // the frames selected, once known
   try {
-    FrameScene first = program.evaluate(frame_time(0, 1, 24));
+    FrameScene first = program.evaluate_first_frame();
     const int frame_count = first.animation ? first.animation->frames : 1;
-    const double fps = first.animation ? first.animation->fps : 24;
+    const double fps = first.animation ? first.animation->fps : kDefaultFps;
     const std::vector<int> frames = select_frames(frame_count, o.frames, o.shard);
+    asked = frames;
 
     PipelineOptions options;
     options.run.title = name;
@@ -130,6 +162,7 @@ int run_program(const Program& program, const CliOptions& o, std::ostream& out, 
     options.jobs = o.jobs;
     options.render = o.mode != CliOptions::Mode::Check;
     options.keep_records = o.stats;  // a long sequence keeps no per-frame record unless asked
+    options.on_frame = [&](std::size_t done, std::size_t total) { progress.update(done, total); };
 
     // Mistakes visible in frame 0 are reported before any rendering: no camera, a bad output name, a
     // missing directory, one file named for several frames of a one-frame device.
@@ -154,6 +187,7 @@ int run_program(const Program& program, const CliOptions& o, std::ostream& out, 
     const std::size_t objects = first.scene.objects.size();
 
     const PipelineResult result = run_pipeline(program, frames, fps, options, std::move(first));
+    progress.clear();
     std::vector<lang::Diagnostic> shown;
     std::size_t notes = 0;
     for (const lang::Diagnostic& w : result.warnings)
@@ -189,6 +223,14 @@ int run_program(const Program& program, const CliOptions& o, std::ostream& out, 
     return report(err, e);
   } catch (const OutputError& e) {
     return report(err, e, program);
+  } catch (const RunInterrupted& e) {
+    progress.clear();
+    return report(err, e, asked);
+  } catch (const RenderCancelled&) {
+    if (o.mode == CliOptions::Mode::Repl) throw;  // the REPL says it stopped
+    progress.clear();
+    err << "hlrscript: interrupted before any frame was written; nothing written\n";
+    return kExitInterrupted;
   }
 }
 
@@ -257,9 +299,10 @@ int run_cli(int argc, const char* const argv[], std::ostream& out, std::ostream&
 }
 
 int run_cli(int argc, const char* const argv[], std::istream& in, bool in_is_terminal, std::ostream& out,
-            std::ostream& err) {
-  const std::optional<CliOptions> options = parse_cli(argc, argv, err);
+            std::ostream& err, bool err_is_terminal) {
+  std::optional<CliOptions> options = parse_cli(argc, argv, err);
   if (!options) return kExitUsage;
+  options->progress = err_is_terminal && !options->quiet;
   try {
     switch (options->mode) {
       case CliOptions::Mode::Help:
@@ -267,15 +310,19 @@ int run_cli(int argc, const char* const argv[], std::istream& in, bool in_is_ter
       case CliOptions::Mode::Version:
         out << kVersion << "\n";
         return kExitOk;
-      case CliOptions::Mode::Demo:
+      case CliOptions::Mode::Demo: {
+        const InterruptHandler signals({SIGINT, SIGTERM});  // a clean stop: RunInterrupted, exit 130
         return run_demo(*options, out, err);
+      }
       case CliOptions::Mode::Watch:
         return run_watch(*options, out, err);
       case CliOptions::Mode::Repl:
         return run_repl(*options, in, in_is_terminal, out, err);
       case CliOptions::Mode::Render:
-      case CliOptions::Mode::Check:
+      case CliOptions::Mode::Check: {
+        const InterruptHandler signals({SIGINT, SIGTERM});
         return run_script(*options, out, err);
+      }
     }
   } catch (const DeviceError& e) {
     err << "hlrscript: error: " << e.what() << "\n";

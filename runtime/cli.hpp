@@ -21,6 +21,7 @@ enum ExitCode : int {
   kExitInput = 66,
   kExitInternal = 70,
   kExitOutput = 73,
+  kExitInterrupted = 130,  // 128 + SIGINT, as shells report it
 };
 
 struct CliOptions {
@@ -29,7 +30,7 @@ struct CliOptions {
   std::string help_topic;             // hlrscript help TOPIC
   std::optional<std::string> output;  // -o
   std::optional<std::string> camera;
-  std::optional<FrameRange> frames;
+  std::optional<FrameList> frames;
   std::optional<Shard> shard;
   std::optional<bool> hidden;
   unsigned jobs = 0;  // --jobs: threads for frames and the work inside them; 0: one per core
@@ -38,6 +39,8 @@ struct CliOptions {
   DeviceOptions device;         // --paper, --margin, --scale, --dpi, --plotter, --pen-order, ...
   int demo_frames = 12;         // --demo --frames N
   bool repl_requested = false;  // `hlrscript repl` / --repl: a REPL even when stdin is not a terminal
+  bool quiet = false;           // --quiet: no progress line
+  bool progress = false;        // set by run_cli: a progress line on stderr (a terminal, and not --quiet)
 };
 
 // Parses the command line (Boost.Program_options). Returns nullopt after writing a usage error to `err`.
@@ -45,9 +48,10 @@ std::optional<CliOptions> parse_cli(int argc, const char* const argv[], std::ost
 std::string usage_text();
 
 // `in` is what a script on standard input or the REPL reads; `in_is_terminal` says whether it is a
-// terminal (then the REPL reads the terminal itself, through libedit). The short form reads nothing.
+// terminal (then the REPL reads the terminal itself, through libedit); `err_is_terminal` whether long
+// runs show a progress line. The short form reads nothing.
 int run_cli(int argc, const char* const argv[], std::istream& in, bool in_is_terminal, std::ostream& out,
-            std::ostream& err);
+            std::ostream& err, bool err_is_terminal = false);
 int run_cli(int argc, const char* const argv[], std::ostream& out, std::ostream& err);
 
 // `hlrscript FILE` (options.script): load, then run_loaded_program. `inputs`, when given, receives the

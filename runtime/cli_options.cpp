@@ -27,10 +27,11 @@ po::options_description visible_options() {
        "in the name writes one file per frame")  //
       ("camera", po::value<std::string>()->value_name("NAME"),
        "camera to draw with (default: the last declared)")  //
-      ("frames", po::value<std::string>()->value_name("A-B"),
-       "render frames A to B only (0-based, inclusive)")  //
+      ("frames", po::value<std::string>()->value_name("LIST"),
+       "render only these frames (0-based): A-B, A, A- (to the end), or a list: 0,5,10-20")  //
       ("shard", po::value<std::string>()->value_name("K/N"),
-       "render the frames f with f % N == K-1 (job K of N; with --frames, of those)")  //
+       "render the frames f with f % N == K-1 (job K of N; with --frames, of those); auto: K/N of a Slurm "
+       "job array; auto/N: K from a Kubernetes indexed Job or GNU parallel")  //
       ("jobs,j", po::value<std::string>()->value_name("N"),
        "use N threads for frames and the hidden lines inside them (default 0: one per core)")  //
       ("hidden", po::value<std::string>()->value_name("off|dashed"),
@@ -60,6 +61,7 @@ po::options_description visible_options() {
       ("plan-budget", po::value<std::string>()->value_name("MS"),
        "time budget of the optimized pen plan per frame (default 200 ms)")                                  //
       ("demo", "render the built-in demo (Desens' aircraft carrier); --frames N sets its approach frames")  //
+      ("quiet,q", "no progress line on a terminal")                                                         //
       ("verbose", "also print notes on what the script's options accept (warped faces, crossing holes)")    //
       ("repl", "start the REPL (also: hlrscript repl [FILE], or hlrscript alone in a terminal)")            //
       ("help,h", "show this help")                                                                          //
@@ -255,7 +257,7 @@ std::optional<CliOptions> parse_cli(int argc, const char* const argv[], std::ost
         return usage_error(
             err, "--demo --frames needs a whole number from 1 to " + std::to_string(kMaxFrames - 1));
       o.demo_frames = n;
-    } else if (!(o.frames = parse_frame_range(text, error))) {
+    } else if (!(o.frames = parse_frame_list(text, error))) {
       return usage_error(err, error);
     }
   }
@@ -277,6 +279,7 @@ std::optional<CliOptions> parse_cli(int argc, const char* const argv[], std::ost
   }
   o.stats = vm.count("stats") > 0;
   o.verbose = vm.count("verbose") > 0;
+  o.quiet = vm.count("quiet") > 0;
   if (!parse_device_options(vm, o.device, error)) return usage_error(err, error);
   if (o.mode == CliOptions::Mode::Check && o.output) return usage_error(err, "check writes nothing; drop -o");
   return o;

@@ -44,7 +44,7 @@ Value Evaluator::eval_call(const lang::CallExpr& call, const lang::Expr& expr, c
   const Function& function = *callee.as_function();
   if (const auto* builtin = std::get_if<BuiltinFunction>(&function.body)) {
     CallArgs call_args(CallSite{function.name, builtin->signature, expr.span}, std::move(args), budget_,
-                       &sources_);
+                       &sources_, &out_.time);
 
     return builtin->impl(call_args);
   }

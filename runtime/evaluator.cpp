@@ -27,6 +27,7 @@ Evaluator::Evaluator(SourceTable& sources, FrameScene& out) : sources_(sources),
   frame_globals->define("frame", Value::number(out.time.frame), {});
   frame_globals->define("t", Value::number(out.time.t), {});
   frame_globals->define("time", Value::number(out.time.time), {});
+  frame_globals->define("frames", Value::number(out.time.frames), {});
   globals_ = std::make_shared<Scope>(std::move(frame_globals));
   def_scopes_.push_back(globals_);
 }

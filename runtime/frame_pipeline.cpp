@@ -161,14 +161,21 @@ class StagedFile {
 // The in-order end of the pipeline: results in frame order, files opened and appended to.
 class FrameSink {
  public:
-  FrameSink(const PipelineOptions& options) : options_(options) {}
+  FrameSink(const PipelineOptions& options, std::size_t total) : options_(options), total_(total) {}
 
-  // False once a frame has failed: later frames cannot matter.
+  // False once a frame has failed or the run was interrupted: later frames cannot matter.
   bool take(FrameJob& job) {
-    if (error_) return false;
+    if (error_ || interrupted_) return false;
     if (job.error) {
-      error_ = job.error;
-      return false;
+      try {
+        std::rethrow_exception(job.error);
+      } catch (const RenderCancelled&) {
+        interrupted_ = true;
+        return false;
+      } catch (...) {
+        error_ = job.error;
+        return false;
+      }
     }
     try {
       add(job);
@@ -179,11 +186,14 @@ class FrameSink {
     return true;
   }
 
+  void interrupt() { interrupted_ = true; }
+
   PipelineResult finish() {
     if (error_) {
       files_.clear();  // removes every staged file
       std::rethrow_exception(error_);
     }
+    if (interrupted_) keep_complete_files();
     for (const auto& f : files_)
       if (!f->finished()) f->finish();
     for (const auto& f : files_) f->commit();
@@ -191,6 +201,29 @@ class FrameSink {
   }
 
  private:
+  // Frames are taken in order and a file's frames are consecutive, so every file but the one the last
+  // frame went to is whole; that one too when its device holds one frame.
+  [[noreturn]] void keep_complete_files() {
+    std::vector<fs::path> kept;
+    bool removed = false;
+    for (std::size_t i = 0; i < files_.size(); ++i) {
+      const bool last = i + 1 == files_.size();
+      if (last && !files_[i]->finished()) {
+        removed = true;
+        continue;
+      }
+      if (!files_[i]->finished()) files_[i]->finish();
+      files_[i]->commit();
+      kept.push_back(result_.files[i]);
+    }
+    files_.clear();  // removes the file that was still being written
+    // Done: the frames that are in a kept file (without files, every frame taken).
+    std::vector<int> done;
+    for (std::size_t k = 0; k < done_.size(); ++k)
+      if (!removed || done_file_[k] + 1 != result_.files.size()) done.push_back(done_[k]);
+    throw RunInterrupted(std::move(done), std::move(kept), removed);
+  }
+
   void add(FrameJob& job) {
     for (lang::Diagnostic& w : job.warnings)
       if (seen_.emplace(w.span.file, w.span.begin.offset, w.span.end.offset, w.message).second)
@@ -213,6 +246,9 @@ class FrameSink {
       if (one_frame_per_file(job.target.device)) file.finish();
     }
     ++result_.frame_count;
+    done_.push_back(frame);
+    done_file_.push_back(it->second);
+    if (options_.on_frame) options_.on_frame(result_.frame_count, total_);
     result_.faces += job.record.faces;
     result_.segments += job.record.segments;
     if (options_.keep_records) result_.frames.push_back(std::move(job.record));
@@ -225,6 +261,10 @@ class FrameSink {
   std::vector<int> first_frames_;
   std::set<std::tuple<lang::FileId, std::uint32_t, std::uint32_t, std::string>> seen_;
   std::exception_ptr error_;
+  std::atomic<bool> interrupted_{false};  // also set by the input stage, on another thread
+  std::vector<int> done_;                 // frames taken, in order
+  std::vector<std::size_t> done_file_;    // the file each went to (an index into result_.files)
+  std::size_t total_;                     // frames asked for
 };
 
 }  // namespace
@@ -236,12 +276,13 @@ PipelineResult run_pipeline(const Program& program, const std::vector<int>& fram
   // Frames in flight: enough to keep every thread busy while one waits its turn to be written, few
   // enough that memory does not grow with the sequence.
   const std::size_t tokens = 2 * static_cast<std::size_t>(jobs) + 1;
-  FrameSink sink(options);
+  FrameSink sink(options, frames.size());
   std::size_t next = 0;
   std::atomic<bool> stop{false};
 
   auto input = [&](tbb::flow_control& fc) -> FrameJob* {
-    if (stop || next >= frames.size()) {
+    if (interrupt_requested()) sink.interrupt();
+    if (stop || interrupt_requested() || next >= frames.size()) {
       fc.stop();
       return nullptr;
     }
@@ -269,6 +310,10 @@ PipelineResult run_pipeline(const Program& program, const std::vector<int>& fram
 
   if (jobs == 1) {  // no scheduler at all: one frame after another on this thread
     for (FrameJob* job; !stop && next < frames.size();) {
+      if (interrupt_requested()) {
+        sink.interrupt();
+        break;
+      }
       job = new FrameJob;
       job->index = next++;
       output(work(job));

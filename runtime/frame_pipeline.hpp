@@ -9,6 +9,7 @@
 
 #include <cstddef>
 #include <filesystem>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -30,6 +31,19 @@ struct OutputError : DeviceError {
   OutputTarget target;
 };
 
+// The run was stopped (Ctrl-C, SIGTERM: interrupt_requested()) after `frames_done` of the frames asked
+// for, in order. The files that were complete are in place (`files`); the rest were removed.
+struct RunInterrupted : std::runtime_error {
+  RunInterrupted(std::vector<int> done, std::vector<std::filesystem::path> written, bool removed)
+      : std::runtime_error("interrupted"),
+        frames_done(std::move(done)),
+        files(std::move(written)),
+        removed_partial(removed) {}
+  std::vector<int> frames_done;
+  std::vector<std::filesystem::path> files;
+  bool removed_partial;  // a file still being written was removed
+};
+
 struct PipelineOptions {
   RunSettings run;
   unsigned jobs = 0;           // threads for everything (frames and the work inside them); 0: one per core
@@ -37,6 +51,8 @@ struct PipelineOptions {
   bool write = true;           // false: render and plan, but write no file (tests, the REPL)
   bool keep_segments = false;  // FrameRecord::segments holds the frame's pieces
   bool keep_records = true;    // PipelineResult::frames has every frame's record (else totals only)
+  // Called in frame order as each frame is written (done of total): the command's progress line.
+  std::function<void(std::size_t done, std::size_t total)> on_frame;
 };
 
 // What became of one frame, in frame order.
@@ -64,7 +80,9 @@ struct PipelineResult {
 
 // Runs `frames` of `program`. `first` is frame 0's scene when the caller has evaluated it already; `fps`
 // comes from its animate statement. Throws EvalError or RunError of the lowest failing frame (for an
-// animation the message names the frame), OutputError for a device's failure.
+// animation the message names the frame), OutputError for a device's failure, RunInterrupted when
+// interrupt_requested() stopped it: then each file that holds only frames done is kept whole (a file per
+// frame, and any file a later frame did not go to), the file still being written is removed.
 PipelineResult run_pipeline(const Program& program, const std::vector<int>& frames, double fps,
                             const PipelineOptions& options, std::optional<FrameScene> first = std::nullopt);
 

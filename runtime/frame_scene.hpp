@@ -14,15 +14,9 @@
 #include "core/hlr/scene.hpp"
 #include "lang/ast.hpp"
 #include "lang/diagnostic.hpp"
+#include "runtime/frame_time.hpp"
 
 namespace hlr::runtime {
-
-// The values bound as `frame`, `t` and `time` before an evaluation.
-struct FrameTime {
-  int frame = 0;
-  double t = 0;     // frame / (N − 1), 0 for a single frame
-  double time = 0;  // seconds: frame / fps
-};
 
 struct NamedCamera {
   std::string name;
@@ -32,7 +26,7 @@ struct NamedCamera {
 
 struct AnimationSetting {  // animate frames N fps F
   int frames = 1;
-  double fps = 24;
+  double fps = kDefaultFps;
   lang::SourceSpan span;
 };
 

@@ -79,7 +79,8 @@ std::optional<std::string> language_help(const std::string& topic) {
   for (const StatementHelp& s : kStatements)
     if (topic == s.keyword) return std::string(s.form) + "\n  " + s.help + "\n";
   const Value* v = builtins().find(topic);
-  if (v && !v->is(ValueKind::Function)) return topic + " = " + display(*v, kShownValueLength) + " (a built-in constant)\n";
+  if (v && !v->is(ValueKind::Function))
+    return topic + " = " + display(*v, kShownValueLength) + " (a built-in constant)\n";
   if (const BuiltinFunction* f = builtin_function(topic)) return builtin_help(topic, *f);
   return std::nullopt;
 }

@@ -6,5 +6,6 @@
 #include "runtime/cli.hpp"
 
 int main(int argc, char** argv) {
-  return hlr::runtime::run_cli(argc, argv, std::cin, ::isatty(STDIN_FILENO) == 1, std::cout, std::cerr);
+  return hlr::runtime::run_cli(argc, argv, std::cin, ::isatty(STDIN_FILENO) == 1, std::cout, std::cerr,
+                               ::isatty(STDERR_FILENO) == 1);
 }

@@ -10,7 +10,12 @@ namespace hlr::runtime {
 
 Program::Program(std::unique_ptr<SourceTable> sources, const SourceEntry* main)
     : sources_(std::move(sources)), main_(main) {
-  if (parsed()) run_on_big_stack([&] { static_errors_ = resolve_program(*main_, *sources_); });
+  if (!parsed()) return;
+  run_on_big_stack([&] {
+    Resolution r = resolve_program(*main_, *sources_);
+    static_errors_ = std::move(r.errors);
+    uses_frames_ = r.uses_frames;
+  });
 }
 
 std::unique_ptr<Program> Program::load(const std::filesystem::path& path, const std::string& display_name) {
@@ -50,11 +55,19 @@ FrameScene Program::evaluate(const FrameTime& time,
   return scene;
 }
 
+FrameScene Program::evaluate_first_frame(const std::function<void(const Evaluator&)>& inspect) const {
+  FrameScene first = evaluate(frame_time(0, 1, kDefaultFps), inspect);
+  if (uses_frames_ && first.animation && first.animation->frames > 1)
+    first = evaluate(frame_time(0, first.animation->frames, first.animation->fps), inspect);
+  return first;
+}
+
 FrameTime frame_time(int frame, int frame_count, double fps) {
   FrameTime t;
   t.frame = frame;
   t.t = frame_count > 1 ? static_cast<double>(frame) / (frame_count - 1) : 0;
   t.time = static_cast<double>(frame) / fps;
+  t.frames = frame_count;
   return t;
 }
 

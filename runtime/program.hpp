@@ -31,9 +31,13 @@ class Program {
   // names, calls whose arguments do not fit. evaluate() throws them before running anything.
   const std::vector<lang::Diagnostic>& static_errors() const { return static_errors_; }
 
+  // Frame 0, the evaluation that says how long the sequence is. A script that reads `frames` is
+  // evaluated again once the animate statement has told N, so frame 0 sees what every other frame sees.
+  FrameScene evaluate_first_frame(const std::function<void(const Evaluator&)>& inspect = nullptr) const;
+
   // Evaluates the whole script with `frame`, `t` and `time` bound. Throws EvalError (also for a script
-  // with syntax errors or static errors). Runs on a thread with a large stack (big_stack.hpp), so no script can overflow
-  // the caller's.
+  // with syntax errors or static errors). Runs on a thread with a large stack (big_stack.hpp), so no script
+  // can overflow the caller's.
   FrameScene evaluate(const FrameTime& time) const;
   // The same, then `inspect` sees the evaluator (its top-level names) before it is gone (the REPL).
   FrameScene evaluate(const FrameTime& time, const std::function<void(const Evaluator&)>& inspect) const;
@@ -47,6 +51,7 @@ class Program {
   std::unique_ptr<SourceTable> sources_;  // grows as includes are loaded (internally synchronised)
   const SourceEntry* main_;
   std::vector<lang::Diagnostic> static_errors_;
+  bool uses_frames_ = false;
 };
 
 // `frame`, `t` = frame/(N − 1) (0 for one frame) and `time` = frame/fps.

@@ -3,7 +3,6 @@
 #include <signal.h>
 #include <unistd.h>
 
-#include <atomic>
 #include <istream>
 #include <ostream>
 #include <sstream>
@@ -19,32 +18,9 @@ namespace hlr::runtime {
 
 namespace {
 
-std::atomic<bool> interrupted{false};
-
-void on_interrupt(int) {
-  interrupted = true;
-  interrupt_requested() = true;  // stops an evaluation or a render under way (runtime/interrupt.hpp)
-}
-
-// Ctrl-C cancels the line being typed, or stops the work under way, instead of ending the process;
-// restored on leaving.
-class InterruptGuard {
- public:
-  InterruptGuard() {
-    struct sigaction a {};
-    a.sa_handler = on_interrupt;
-    sigemptyset(&a.sa_mask);
-    ::sigaction(SIGINT, &a, &before_);
-  }
-  ~InterruptGuard() { ::sigaction(SIGINT, &before_, nullptr); }
-  InterruptGuard(const InterruptGuard&) = delete;
-  InterruptGuard& operator=(const InterruptGuard&) = delete;
-
- private:
-  struct sigaction before_ {};
-};
-
 int run_stdin_script(const CliOptions& o, std::istream& in, std::ostream& out, std::ostream& err) {
+  const InterruptHandler signals(
+      {SIGINT, SIGTERM});  // a clean stop, as for a script named on the command line
   std::ostringstream text;
   text << in.rdbuf();
   const auto program =
@@ -53,7 +29,9 @@ int run_stdin_script(const CliOptions& o, std::istream& in, std::ostream& out, s
     print_diagnostics(err, program->syntax_errors(), program->sources());
     return kExitScript;
   }
-  return run_loaded_program(*program, o, out, err);
+  CliOptions script = o;
+  script.mode = CliOptions::Mode::Render;  // a script run, reported as one (not the REPL's)
+  return run_loaded_program(*program, script, out, err);
 }
 
 }  // namespace
@@ -80,14 +58,14 @@ int run_repl(const CliOptions& o, std::istream& in, bool terminal, std::ostream&
                : make_stream_reader(in, out, false);
   if (terminal)
     out << "hlrscript 0.1.0 REPL: statements as in a script, :help for commands, :quit or Ctrl-D to leave\n";
-  const InterruptGuard guard;
+  // Ctrl-C cancels the line being typed, or stops the work under way, instead of ending the session.
+  const InterruptHandler ctrl_c({SIGINT});
   std::string entry;
   for (;;) {
-    interrupted = false;
     interrupt_requested() = false;
     const std::optional<std::string> line = reader->read(session.continuing() ? "...> " : "hls> ");
     if (!line) {
-      if (interrupted && terminal) {  // Ctrl-C: drop what was typed, stay
+      if (interrupt_requested() && terminal) {  // Ctrl-C: drop what was typed, stay
         session.cancel_input();
         entry.clear();
         out << "\n";

@@ -96,7 +96,7 @@ bool overlaps(const std::vector<std::string>& a, const std::vector<std::string>&
 // Evaluates frame `frame` of `program` (frame 0 first: it says how many frames there are).
 FrameScene evaluate_frame(const Program& program, int frame,
                           const std::function<void(const Evaluator&)>& inspect = nullptr) {
-  FrameScene first = program.evaluate(frame_time(0, 1, 24), frame == 0 ? inspect : nullptr);
+  FrameScene first = program.evaluate_first_frame(frame == 0 ? inspect : nullptr);
   if (frame == 0) return first;
   const int count = first.animation ? first.animation->frames : 1;
   if (frame >= count)
@@ -407,6 +407,7 @@ ReplReply ReplSession::save(const std::string& file) {
 ReplReply ReplSession::render(const std::string& file) {
   const auto program = session_program(view_text(chunks_), loaded_);
   CliOptions o;
+  o.mode = CliOptions::Mode::Repl;  // the REPL's Ctrl-C handler stays; a stop is reported as the REPL's
   o.script = "<session>";
   if (!file.empty()) o.output = file;
   o.camera = drawn_camera();

@@ -32,16 +32,16 @@ struct StaticScope {
 class Resolver {
  public:
   explicit Resolver(SourceTable& sources) : sources_(sources) {
-    for (const char* name : {"frame", "t", "time"}) frame_globals_.names[name].defined = true;
+    for (const char* name : {"frame", "t", "time", "frames"}) frame_globals_.names[name].defined = true;
   }
 
-  std::vector<lang::Diagnostic> run(const SourceEntry& main) {
+  Resolution run(const SourceEntry& main) {
     StaticScope globals{&frame_globals_, 0, {}};
     std::set<lang::FileId> seen{main.id};
     declare_all(main.script->statements, globals, seen);
     included_.insert(main.id);
     statements(main.script->statements, globals);
-    return std::move(errors_);
+    return {std::move(errors_), uses_frames_};
   }
 
  private:
@@ -239,7 +239,11 @@ class Resolver {
   }
 
   void name(const lang::NameRef& ref, const lang::Expr& e, const StaticScope& scope) {
-    if (lookup(ref.name, scope) || builtins().find(ref.name)) return;
+    if (const Declared* d = lookup(ref.name, scope)) {
+      uses_frames_ = uses_frames_ || d == &frame_globals_.names.at("frames");
+      return;
+    }
+    if (builtins().find(ref.name)) return;
     if (!unknown_.insert(ref.name).second) return;  // one report per name: its first use
     std::vector<std::string> candidates = visible_names(scope);
     const std::vector<std::string> builtin_names = builtins().names();
@@ -327,6 +331,7 @@ class Resolver {
 
   SourceTable& sources_;
   StaticScope frame_globals_;
+  bool uses_frames_ = false;
   std::set<std::string> unknown_;    // names reported as unknown
   std::set<lang::FileId> included_;  // files whose statements were walked, each once as the evaluator does
   std::vector<lang::Diagnostic> errors_;
@@ -334,7 +339,7 @@ class Resolver {
 
 }  // namespace
 
-std::vector<lang::Diagnostic> resolve_program(const SourceEntry& main, SourceTable& sources) {
+Resolution resolve_program(const SourceEntry& main, SourceTable& sources) {
   if (!main.script) return {};
   return Resolver(sources).run(main);
 }

@@ -22,9 +22,13 @@
 
 namespace hlr::runtime {
 
-// Every mistake found, in source order of discovery (empty: nothing found). Includes are loaded into
-// `sources` as the evaluator would load them; one that cannot be read or parsed is left to the
-// evaluator, which reports it with its context.
-std::vector<lang::Diagnostic> resolve_program(const SourceEntry& main, SourceTable& sources);
+struct Resolution {
+  std::vector<lang::Diagnostic> errors;  // in order of discovery; empty: nothing found
+  bool uses_frames = false;              // the program reads `frames` (the sequence's length)
+};
+
+// Includes are loaded into `sources` as the evaluator would load them; one that cannot be read or parsed
+// is left to the evaluator, which reports it with its context.
+Resolution resolve_program(const SourceEntry& main, SourceTable& sources);
 
 }  // namespace hlr::runtime

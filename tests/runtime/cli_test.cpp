@@ -43,7 +43,7 @@ TEST(Cli, UsageErrors) {
   EXPECT_EQ(run({"a.hls", "--jobs", "-2"}).code, 64);
   EXPECT_EQ(run({"check"}).code, 64);
   const Result r = run({"a.hls", "--frames", "9-2"});
-  EXPECT_NE(r.err.find("hlrscript: error: --frames 9-2: expected A-B"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("hlrscript: error: --frames 9-2: expected frame numbers 0 <= A <= B as A-B"), std::string::npos) << r.err;
 }
 
 TEST(Cli, RendersChecksAndRefuses) {

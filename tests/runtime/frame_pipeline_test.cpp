@@ -1,5 +1,7 @@
 // The frame pipeline through the command: the files' bytes do not depend on --jobs or on sharding, and a
 // failing frame leaves nothing behind, whatever ran beside it.
+#include "runtime/frame_pipeline.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cstdlib>
@@ -8,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "runtime/interrupt.hpp"
 #include "tests/runtime/cli_run.hpp"
 #include "tests/runtime/runtime_test_support.hpp"
 
@@ -124,6 +127,52 @@ TEST_F(FramePipeline, AFailingFrameLeavesNothingBehind) {
       EXPECT_NE(r.err.find("division by zero (in frame 9)"), std::string::npos) << r.err;
       EXPECT_TRUE(fs::is_empty(sub)) << pattern << " --jobs " << jobs << ": " << files_in(sub).size()
                                      << " files left";
+    }
+  }
+}
+
+// Ctrl-C (interrupt_requested(), set here once frame 2 is written): the files holding only frames done
+// are kept whole, the one still being written is removed, and the exception says which frames are done.
+TEST_F(FramePipeline, AnInterruptKeepsTheCompleteFilesOnly) {
+  const auto program = Program::load(script_, "turntable.hls");
+  const std::vector<int> frames = {0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11};
+  for (const std::string pattern : {"f-{frame:02}.svg", "f-{frame:02}.pdf", "all.pdf"}) {
+    for (const unsigned jobs : {1U, 2U}) {
+      const fs::path sub =
+          dir_ / ("stop-" + std::to_string(jobs) + "-" + fs::path(pattern).extension().string().substr(1) +
+                  (pattern[0] == 'a' ? "-all" : ""));
+      fs::create_directories(sub);
+      PipelineOptions options;
+      options.run.title = "turntable.hls";
+      options.run.frame_count = 12;
+      options.run.output = (sub / pattern).string();
+      options.jobs = jobs;
+      options.on_frame = [](std::size_t done, std::size_t) {
+        if (done == 3) interrupt_requested() = true;
+      };
+      try {
+        run_pipeline(*program, frames, 12, options);
+        ADD_FAILURE() << "not interrupted";
+      } catch (const RunInterrupted& e) {
+        const std::map<std::string, std::string> left = files_in(sub);
+        EXPECT_EQ(left.size(), e.files.size()) << pattern;  // no temporary file stays
+        if (pattern == "all.pdf") {
+          EXPECT_TRUE(e.files.empty());  // the one file of the sequence was not complete
+          EXPECT_TRUE(e.frames_done.empty());
+        } else {
+          // A file per frame: every frame done is in its own complete file; with one thread exactly 0-2
+          // (SVG: written whole at once) or 0-1 (PDF: frame 2's file was still open).
+          const std::vector<int> expected =
+              pattern.ends_with(".svg") ? std::vector<int>{0, 1, 2} : std::vector<int>{0, 1};
+          if (jobs == 1) {
+            EXPECT_EQ(e.frames_done, expected) << pattern;
+          }
+          EXPECT_EQ(e.files.size(), e.frames_done.size()) << pattern;
+          for (const fs::path& f : e.files) EXPECT_GT(fs::file_size(f), 0U) << f;
+          EXPECT_EQ(left.begin()->first, pattern.ends_with(".svg") ? "f-00.svg" : "f-00.pdf");
+        }
+      }
+      interrupt_requested() = false;
     }
   }
 }

@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <map>
+#include <memory>
 
 #include "runtime/frame_pipeline.hpp"
 #include "runtime/frame_selection.hpp"
@@ -127,30 +129,90 @@ TEST(Frames, TheLowestFailingFrameIsReported) {
   }
 }
 
-TEST(Frames, SelectionByRangeAndShard) {
+TEST(Frames, SelectionByListAndShard) {
   EXPECT_EQ(select_frames(5, std::nullopt, std::nullopt), (std::vector<int>{0, 1, 2, 3, 4}));
-  EXPECT_EQ(select_frames(10, FrameRange{2, 5}, std::nullopt), (std::vector<int>{2, 3, 4, 5}));
-  EXPECT_EQ(select_frames(10, FrameRange{8, 20}, std::nullopt), (std::vector<int>{8, 9}));
+  EXPECT_EQ(select_frames(10, FrameList{{2, 5}}, std::nullopt), (std::vector<int>{2, 3, 4, 5}));
+  EXPECT_EQ(select_frames(10, FrameList{{8, 20}}, std::nullopt), (std::vector<int>{8, 9}));
   EXPECT_EQ(select_frames(10, std::nullopt, Shard{2, 3}), (std::vector<int>{1, 4, 7}));
-  EXPECT_EQ(select_frames(10, FrameRange{2, 8}, Shard{1, 3}), (std::vector<int>{3, 6}));
+  EXPECT_EQ(select_frames(10, FrameList{{2, 8}}, Shard{1, 3}), (std::vector<int>{3, 6}));
+  // Lists as Blender's -f: items in any order, overlapping, open-ended; each frame once, in order.
+  EXPECT_EQ(select_frames(12, FrameList{{10, std::nullopt}, {0, 0}, {5, 5}, {4, 6}}, std::nullopt),
+            (std::vector<int>{0, 4, 5, 6, 10, 11}));
   // Every frame in exactly one shard.
   std::vector<int> all;
   for (int k = 1; k <= 4; ++k)
     for (int f : select_frames(10, std::nullopt, Shard{k, 4})) all.push_back(f);
   std::sort(all.begin(), all.end());
   EXPECT_EQ(all, (std::vector<int>{0, 1, 2, 3, 4, 5, 6, 7, 8, 9}));
-  EXPECT_THROW(select_frames(3, FrameRange{5, 6}, std::nullopt), RunError);
+  EXPECT_THROW(select_frames(3, FrameList{{5, 6}}, std::nullopt), RunError);
+  EXPECT_THROW(select_frames(3, FrameList{{0, 1}, {4, std::nullopt}}, std::nullopt), RunError);
 
   std::string error;
-  EXPECT_EQ(parse_frame_range("3-7", error)->last, 7);
-  EXPECT_EQ(parse_frame_range("4", error)->first, 4);
-  EXPECT_FALSE(parse_frame_range("7-3", error));
-  EXPECT_FALSE(parse_frame_range("a-b", error));
-  EXPECT_FALSE(parse_frame_range("-3", error));
+  EXPECT_EQ(parse_frame_list("3-7", error)->front().last, 7);
+  EXPECT_EQ(parse_frame_list("4", error)->front().first, 4);
+  const std::optional<FrameList> list = parse_frame_list("0,5,10-20,30-", error);
+  ASSERT_TRUE(list);
+  ASSERT_EQ(list->size(), 4U);
+  EXPECT_EQ((*list)[1].last, 5);
+  EXPECT_EQ((*list)[2].first, 10);
+  EXPECT_EQ((*list)[2].last, 20);
+  EXPECT_EQ((*list)[3].first, 30);
+  EXPECT_FALSE((*list)[3].last);
+  for (const char* bad : {"7-3", "a-b", "-3", "1,,2", "1,", "", "3--4"})
+    EXPECT_FALSE(parse_frame_list(bad, error)) << bad;
   EXPECT_EQ(parse_shard("3/8", error)->index, 3);
   EXPECT_FALSE(parse_shard("0/8", error));
   EXPECT_FALSE(parse_shard("9/8", error));
   EXPECT_FALSE(parse_shard("3", error));
+}
+
+// An environment of our own for --shard auto.
+Environment environment(std::map<std::string, std::string> vars) {
+  auto shared = std::make_shared<std::map<std::string, std::string>>(std::move(vars));
+  return [shared](const char* name) -> const char* {
+    const auto it = shared->find(name);
+    return it == shared->end() ? nullptr : it->second.c_str();
+  };
+}
+
+TEST(Frames, AutoShardsFromSlurmKubernetesAndGnuParallel) {
+  std::string error;
+  // sbatch --array=1-8: task 3 is job 3 of 8.
+  std::optional<Shard> s = parse_shard(
+      "auto", error,
+      environment(
+          {{"SLURM_ARRAY_TASK_ID", "3"}, {"SLURM_ARRAY_TASK_MIN", "1"}, {"SLURM_ARRAY_TASK_MAX", "8"}}));
+  ASSERT_TRUE(s) << error;
+  EXPECT_EQ(s->index, 3);
+  EXPECT_EQ(s->count, 8);
+  // --array=0-20:5 (0, 5, 10, 15, 20): task 10 is job 3 of 5.
+  s = parse_shard("auto", error,
+                  environment({{"SLURM_ARRAY_TASK_ID", "10"},
+                               {"SLURM_ARRAY_TASK_MIN", "0"},
+                               {"SLURM_ARRAY_TASK_MAX", "20"},
+                               {"SLURM_ARRAY_TASK_STEP", "5"}}));
+  ASSERT_TRUE(s) << error;
+  EXPECT_EQ(s->index, 3);
+  EXPECT_EQ(s->count, 5);
+  // Only the count given: ids from 0.
+  s = parse_shard("auto", error,
+                  environment({{"SLURM_ARRAY_TASK_ID", "0"}, {"SLURM_ARRAY_TASK_COUNT", "4"}}));
+  ASSERT_TRUE(s) << error;
+  EXPECT_EQ(s->index, 1);
+  EXPECT_EQ(s->count, 4);
+  EXPECT_FALSE(parse_shard("auto", error, environment({})));
+  EXPECT_NE(error.find("SLURM_ARRAY_TASK_ID is not set"), std::string::npos) << error;
+  // Kubernetes indexed Jobs count from 0, GNU parallel from 1.
+  s = parse_shard("auto/6", error, environment({{"JOB_COMPLETION_INDEX", "5"}}));
+  ASSERT_TRUE(s) << error;
+  EXPECT_EQ(s->index, 6);
+  s = parse_shard("auto/6", error, environment({{"PARALLEL_SEQ", "2"}}));
+  ASSERT_TRUE(s) << error;
+  EXPECT_EQ(s->index, 2);
+  EXPECT_EQ(s->count, 6);
+  EXPECT_FALSE(parse_shard("auto/6", error, environment({{"PARALLEL_SEQ", "7"}})));
+  EXPECT_EQ(error, "--shard auto/6: PARALLEL_SEQ 7 is not one of 6 jobs");
+  EXPECT_FALSE(parse_shard("auto/6", error, environment({})));
 }
 
 TEST(Frames, OutputNamesGroupFramesIntoFiles) {

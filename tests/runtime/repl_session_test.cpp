@@ -161,7 +161,7 @@ TEST(ReplSession, CompletionInsideACallOffersItsParameterNamesFirst) {
             (std::vector<std::string>{"eye:", "target:", "up:", "fov:", "aspect:", "near:"}));
   // After an argument, with a word begun: the parameters, then what an expression may use.
   EXPECT_EQ(s.completions("camera c = lookat(eye: (1, 2, 3), f", "f"),
-            (std::vector<std::string>{"fov:", "face", "floor", "for"}));
+            (std::vector<std::string>{"fov:", "face", "floor", "follow", "for"}));
   // Inside a nested call, the inner one's; after it closed, the outer one's again.
   EXPECT_EQ(s.completions("draw box(size: vec(", "")[0], "x:");
   EXPECT_EQ(s.completions("draw sphere(2, sl", "sl"), (std::vector<std::string>{"slices:"}));
