@@ -80,11 +80,12 @@ constexpr const char* kExamples =
     "  hlrscript landing.hls -o 'f-{frame:03}.hpgl'      # one plotter file per frame\n"
     "  hlrscript landing.hls -o 'f-{frame:04}.pdf' --frames 0-99 --jobs 2\n"
     "  hlrscript landing.hls -o 'f-{frame:04}.pdf' --shard 3/8    # job 3 of 8: frames 2, 10, 18, ...\n"
+    "  sbatch --array=1-8 --wrap \"hlrscript landing.hls -o 'f-{frame:04}.pdf' --shard auto\"  # Slurm\n"
     "  hlrscript check scene.hls                         # evaluate every frame, write nothing\n"
     "  hlrscript --demo -o carrier.pdf                   # the built-in demo\n"
     "\n"
     "exit codes: 0 ok, 64 usage error, 65 error in the script, 66 a file cannot be read,\n"
-    "            70 internal error, 73 an output cannot be written\n";
+    "            70 internal error, 73 an output cannot be written, 130 stopped (Ctrl-C)\n";
 
 std::nullopt_t usage_error(std::ostream& err, const std::string& message) {
   err << "hlrscript: error: " << message << "\n"
