@@ -92,11 +92,16 @@ class Resolver {
 
   // The included file, loaded as the evaluator loads it; nullptr when it cannot be (the evaluator says why).
   const SourceEntry* load(const lang::IncludeStmt& include) {
-    if (include.path.empty()) return nullptr;
+    if (include.path.empty()) {
+      missing_include_ = true;
+      return nullptr;
+    }
     const IncludeTarget target = include_target(sources_, include);
     std::string error;
     const SourceEntry* entry = sources_.load(target.path, target.shown, error);
-    return entry && entry->script ? entry : nullptr;
+    if (entry && entry->script) return entry;
+    missing_include_ = true;
+    return nullptr;
   }
 
   // ---- statements ----
@@ -243,7 +248,8 @@ class Resolver {
       uses_frames_ = uses_frames_ || d == &frame_globals_.names.at("frames");
       return;
     }
-    if (builtins().find(ref.name)) return;
+    // A file that cannot be included may define it; the evaluator reports that file instead.
+    if (builtins().find(ref.name) || missing_include_) return;
     if (!unknown_.insert(ref.name).second) return;  // one report per name: its first use
     std::vector<std::string> candidates = visible_names(scope);
     const std::vector<std::string> builtin_names = builtins().names();
@@ -332,6 +338,7 @@ class Resolver {
   SourceTable& sources_;
   StaticScope frame_globals_;
   bool uses_frames_ = false;
+  bool missing_include_ = false;  // an include that cannot be read or parsed: names may come from it
   std::set<std::string> unknown_;    // names reported as unknown
   std::set<lang::FileId> included_;  // files whose statements were walked, each once as the evaluator does
   std::vector<lang::Diagnostic> errors_;

@@ -102,5 +102,23 @@ TEST(DesensCarrierScript, ExampleViewsMatchTheThesisAndTheEngine) {
   }
 }
 
+// The flagship: at its key frames the 48-frame landing (examples/desens/landing.hls, keyframed with
+// track()) draws exactly the lines the thesis printed for Carrier (2)–(5).
+TEST(DesensCarrierScript, LandingKeyFramesAreTheThesisViews) {
+  const hlr::test::DesensModel& model = hlr::test::desens_model("carrier");
+  const auto program = Program::load(example("landing.hls"), "landing.hls");
+  ASSERT_TRUE(program->parsed());
+  const FrameScene first = program->evaluate_first_frame();
+  ASSERT_TRUE(first.animation);
+  ASSERT_EQ(first.animation->frames, 48);
+  for (const auto& [frame, view] : {std::pair{11, "C2"}, {23, "C3"}, {35, "C4"}, {47, "C5"}}) {
+    SCOPED_TRACE(std::string("frame ") + std::to_string(frame) + ", view " + view);
+    const FrameScene scene = program->evaluate(frame_time(frame, 48, first.animation->fps));
+    ASSERT_EQ(scene.cameras.size(), 1U);
+    const FrameResult ours = render_frame(scene.scene, scene.cameras[0].camera);
+    expect_same_lines(hlr::test::desens_expected_lines(model, view), ours.segments, kTolerance, "thesis");
+  }
+}
+
 }  // namespace
 }  // namespace hlr::runtime

@@ -124,6 +124,10 @@ TEST(Resolver, IncludedFilesAreChecked) {
 
 TEST(Resolver, AMissingIncludeIsLeftToTheEvaluator) {
   EXPECT_EQ(static_errors("include \"nowhere.hls\"\ndraw cube(1)\n"), "");
+  // The names it would have defined are not reported: the missing file is the mistake.
+  EXPECT_EQ(static_errors("include \"nowhere.hls\"\ndraw carrier\nlet b = box(1, 2, 3, 4)\n"),
+            "3:22: too many arguments to box(): it takes at most 3, got 4\n");
+  EXPECT_EQ(first_error("include \"nowhere.hls\"\ndraw carrier\n").substr(0, 30), "1:9: cannot read 'nowhere.hls'");
 }
 
 }  // namespace
