@@ -178,9 +178,11 @@ std::string open_call(const std::string& before) {
     if (c == ')' || c == ']') ++depth;
     if ((c == '(' || c == '[') && depth-- == 0) {
       if (c == '[') return "";
-      std::size_t b = i;
+      std::size_t end = i;  // "lookat (" calls lookat too
+      while (end > 0 && (before[end - 1] == ' ' || before[end - 1] == '\t')) --end;
+      std::size_t b = end;
       while (b > 0 && (std::isalnum(static_cast<unsigned char>(before[b - 1])) || before[b - 1] == '_')) --b;
-      return before.substr(b, i - b);
+      return before.substr(b, end - b);
     }
   }
   return "";

@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -165,6 +166,11 @@ TEST(ReplSession, CompletionInsideACallOffersItsParameterNamesFirst) {
   // Inside a nested call, the inner one's; after it closed, the outer one's again.
   EXPECT_EQ(s.completions("draw box(size: vec(", "")[0], "x:");
   EXPECT_EQ(s.completions("draw sphere(2, sl", "sl"), (std::vector<std::string>{"slices:"}));
+  // Tab after a name adds a space: "lookat (" is a call of lookat too. Inside a vector, no parameters.
+  EXPECT_EQ(s.completions("camera c = lookat (ey", "ey"), (std::vector<std::string>{"eye:"}));
+  const std::vector<std::string> in_vector = s.completions("camera c = lookat(eye: (1, 2", "");
+  EXPECT_EQ(std::count(in_vector.begin(), in_vector.end(), "eye:"), 0);
+  EXPECT_FALSE(in_vector.empty());  // what an expression may use
   // The session's own functions.
   feed_all(s, {"def post(height, width = 1) = box(width, width, height)"});
   EXPECT_EQ(s.completions("draw post(h", "h"),
