@@ -9,6 +9,7 @@
 #include <unordered_map>
 #include <vector>
 
+#include "core/camera/camera_error.hpp"
 #include "runtime/arguments.hpp"
 #include "runtime/function.hpp"
 #include "runtime/value.hpp"
@@ -77,5 +78,21 @@ void for_each_sublist(const CallArgs& call, const Bound& b, std::size_t i, std::
                       const std::function<void(const Bound& one, std::size_t k)>& visit);
 
 Value generated_solid(const CallArgs& call, std::size_t faces, const std::function<Solid()>& make);
+
+// A camera built by `make`; a CameraError goes to the argument it names (core's names, or their script
+// aliases object and observer), else to the call. Shared by the camera and timeline built-ins.
+template <typename Make>
+Value make_camera(const Bound& b, const ParamList& params, Make&& make) {
+  try {
+    return Value::camera(make());
+  } catch (const CameraError& e) {
+    std::string name = e.parameter;
+    if (name == "object_position") name = "object";
+    if (name == "observer_position") name = "observer";
+    for (std::size_t i = 0; i < params.size(); ++i)
+      if (params[i].name == name) b.call().fail(b.span(i), e.what());
+    b.call().fail_call(e.what());
+  }
+}
 
 }  // namespace hlr::runtime

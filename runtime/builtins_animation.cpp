@@ -4,7 +4,6 @@
 #include <string>
 
 #include "core/animation/keyframe_track.hpp"
-#include "core/camera/camera_error.hpp"
 #include "core/camera/follow_camera.hpp"
 #include "runtime/builtins.hpp"
 #include "runtime/eval_detail.hpp"
@@ -124,13 +123,7 @@ Value follow_(CallArgs& call) {
   p.fov_deg = b.number(4);
   if (b.present(5)) p.aspect = b.positive(5);
   p.curve = curve_arg(b, 6, true);
-  try {
-    return Value::camera(follow_camera(p));
-  } catch (const CameraError& e) {
-    for (std::size_t i = 0; i < kFollowParams.size(); ++i)
-      if (kFollowParams[i].name == e.parameter) call.fail(b.span(i), e.what());
-    call.fail_call(e.what());
-  }
+  return make_camera(b, kFollowParams, [&] { return follow_camera(p); });
 }
 
 const BuiltinEntry kAnimationBuiltins[] = {
@@ -144,7 +137,8 @@ const BuiltinEntry kAnimationBuiltins[] = {
      "track(keys, time: frame, ease: \"linear\", spline: none)  (keys: [[time, value], [time, value, ease], "
      "...])",
      track_,
-     "Keyframes: the value at `time` (the frame drawn unless given), eased between keys or on a catmull_rom or natural "
+     "Keyframes: the value at `time` (the frame drawn unless given), eased between keys or on a catmull_rom "
+     "or natural "
      "spline through them.",
      {&kTrackParams}},
     {"spline",

@@ -3,7 +3,6 @@
 #include <stdexcept>
 
 #include "core/camera/camera_adjust.hpp"
-#include "core/camera/camera_error.hpp"
 #include "core/camera/desens_camera.hpp"
 #include "core/camera/lookat_camera.hpp"
 #include "core/camera/orbit_camera.hpp"
@@ -15,21 +14,6 @@ namespace {
 
 constexpr KindSet kNumber = kinds(ValueKind::Number);
 constexpr KindSet kVector = kinds(ValueKind::Vector);
-
-// Builds the camera; a CameraError goes to the argument it names (core's names, or their script aliases).
-template <typename Make>
-Value make_camera(const Bound& b, const std::vector<Param>& params, Make&& make) {
-  try {
-    return Value::camera(make());
-  } catch (const CameraError& e) {
-    std::string name = e.parameter;
-    if (name == "object_position") name = "object";
-    if (name == "observer_position") name = "observer";
-    for (std::size_t i = 0; i < params.size(); ++i)
-      if (params[i].name == name) b.call().fail(b.span(i), e.what());
-    b.call().fail_call(e.what());
-  }
-}
 
 const ParamList kLookatParams = {required("eye", kVector),
                                  required("target", kVector),

@@ -477,7 +477,8 @@ TerminalGraphics detect_with_reply(const std::string& reply, std::string* writte
 }
 
 TEST(TerminalGraphics, DetectionAsksTheTerminal) {
-  if (!FakeTerminal().ok()) GTEST_SKIP() << "no pseudo-terminals here";
+  ASSERT_TRUE(FakeTerminal().ok())
+      << "no pseudo-terminal could be opened (posix_openpt): the detection needs one";
   std::string written;
   EXPECT_EQ(detect_with_reply("\x1b_Gi=31;OK\x1b\\\x1b[?62;22c", &written), TerminalGraphics::Kitty);
   EXPECT_NE(written.find("\x1b_Gi=31,s=1,v=1,a=q,t=d,f=24;AAAA\x1b\\\x1b[c"), std::string::npos);
@@ -492,7 +493,7 @@ TEST(TerminalGraphics, InsideTmuxDetectionIsBraille) {
   ::unsetenv("HLRSCRIPT_GRAPHICS");
   ::unsetenv("TMUX");
   const FakeTerminal t;
-  if (!t.ok()) GTEST_SKIP() << "no pseudo-terminals here";
+  ASSERT_TRUE(t.ok()) << "no pseudo-terminal could be opened (posix_openpt): the detection needs one";
   ::setenv("TERM", "tmux-256color", 1);
   EXPECT_EQ(detect_terminal_graphics(t.tty(), t.tty()), TerminalGraphics::Braille);
   ::setenv("TERM", "screen", 1);
@@ -507,7 +508,7 @@ TEST(TerminalGraphics, InsideTmuxDetectionIsBraille) {
 
 TEST(TerminalGraphics, PixelsFromTheTty) {
   const FakeTerminal t;
-  if (!t.ok()) GTEST_SKIP() << "no pseudo-terminals here";
+  ASSERT_TRUE(t.ok()) << "no pseudo-terminal could be opened (posix_openpt): the detection needs one";
   winsize ws{};
   ws.ws_col = 100;
   ws.ws_row = 30;
