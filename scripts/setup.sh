@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages hlrscript needs to build, test and benchmark. Idempotent: quiet and
-# quick when everything is present.
+# quick when everything is present. --cluster adds a single-node Slurm for scripts/cluster-test.sh.
 set -euo pipefail
 packages=(
   build-essential cmake ninja-build pkg-config
@@ -8,6 +8,7 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   poppler-utils hp2xx librsvg2-bin tmux parallel
 )
+if [ "${1:-}" = --cluster ]; then packages+=(slurmctld slurmd slurm-client munge); fi
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q 'install ok installed' || missing+=("$p")
