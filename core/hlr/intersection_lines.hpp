@@ -1,5 +1,6 @@
-// Lines where faces of different solids cross (interpenetrating solids). Each piece strictly inside
-// both faces becomes a candidate edge, examined for visibility like any other. Lines on a back face of a
+// Lines where faces cross: of different solids (interpenetrating solids) and of one solid (parts of one
+// mesh that interpenetrate; Solid::self_crossings). Each piece strictly inside both faces becomes a
+// candidate edge, examined for visibility like any other. Lines on a back face of a
 // closed solid are hidden by the solid itself: they are made only when `keep_culled` asks for them.
 #pragma once
 

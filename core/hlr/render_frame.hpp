@@ -16,7 +16,7 @@ namespace hlr {
 
 struct HlrOptions {
   bool include_hidden = false;     // also return hidden pieces (hidden = true), for a dashed layer
-  bool intersection_lines = true;  // draw where faces of different solids cross
+  bool intersection_lines = true;  // draw where faces cross (of two solids, or of one solid)
   unsigned threads = 0;  // 0: the caller's task arena (every core unless --jobs bounds it); 1: this thread
   // Checked between chunks of work (a fraction of a millisecond each): when it becomes true the
   // frame stops with RenderCancelled (the REPL's Ctrl-C).

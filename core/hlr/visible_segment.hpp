@@ -27,7 +27,7 @@ struct FrameStats {
   std::size_t candidate_edges = 0;     // edges examined after culling and clipping
   std::size_t occluder_faces = 0;      // faces that can hide something
   std::size_t face_tests = 0;          // edge-face pairs examined after the spatial index
-  std::size_t intersection_lines = 0;  // pieces of solid-solid intersection lines
+  std::size_t intersection_lines = 0;  // pieces of intersection lines (between solids and within one)
   std::size_t visible_segments = 0;
 };
 

@@ -3,6 +3,7 @@
 // the input and reports precise diagnostics; the engine relies on the invariants stated here.
 #pragma once
 
+#include <atomic>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -59,18 +60,49 @@ struct SolidEdge {
   bool concave = false;  // dihedral angle measured outside the solid below 180° (Pfister's c > 0)
 };
 
+// A piece of the line where two faces of one solid cross (parts of one mesh that interpenetrate), in the
+// solid's coordinates. Faces that share a vertex or an edge are not said to cross.
+struct SelfCrossing {
+  Point3 p0, p1;
+  FaceIndex face0 = kNoFace, face1 = kNoFace;  // face0 < face1
+};
+
+struct Solid;
+
+// A solid's self-crossings, found the first time they are asked for and kept with the solid (solids are
+// immutable and shared between frames, so a static mesh pays once). Thread-safe; a copy of a solid starts
+// without them, so code that copies a solid and edits the copy never sees stale ones.
+class SelfCrossingCache {
+ public:
+  SelfCrossingCache() = default;
+  SelfCrossingCache(const SelfCrossingCache&) {}
+  SelfCrossingCache& operator=(const SelfCrossingCache&);
+  SelfCrossingCache(SelfCrossingCache&& other) noexcept : found_(other.found_.exchange(nullptr)) {}
+  SelfCrossingCache& operator=(SelfCrossingCache&& other) noexcept;
+  ~SelfCrossingCache();
+  const std::vector<SelfCrossing>& get(const Solid& solid) const;
+
+ private:
+  mutable std::atomic<const std::vector<SelfCrossing>*> found_{nullptr};
+};
+
 struct Solid {
   std::vector<Point3> vertices;
   std::vector<Face> faces;
-  std::vector<Plane> planes;      // one per face, outward
-  std::vector<SolidEdge> edges;   // each shared edge exactly once; markings and free lines too
+  std::vector<Plane> planes;     // one per face, outward
+  std::vector<SolidEdge> edges;  // each shared edge exactly once; markings and free lines too
   // Every boundary edge has exactly two faces traversing it in opposite directions: the surface encloses
   // a volume, so back faces may be culled while the solid lies wholly in front of the eye.
   bool closed = false;
   double crease_angle_deg = 0;  // the crease angle the edge kinds were classified with
 
+  SelfCrossingCache self_crossing_cache;
+
   // This solid moved by `worldFromObject` (any invertible affine map; a mirror keeps faces outward).
   Solid transformed(const Affine3& worldFromObject) const;
+
+  // Where faces of this solid cross each other (core/solid/self_crossings.cpp), sorted by faces.
+  const std::vector<SelfCrossing>& self_crossings() const { return self_crossing_cache.get(*this); }
 };
 
 // Fills Ring::edges of every face from Solid::edges (the builder and transformed() call it).

@@ -2,7 +2,9 @@
 // with the mesh file's own line, and the exit class (unreadable file: input; bad content: script).
 #include <gtest/gtest.h>
 
+#include "core/hlr/render_frame.hpp"
 #include "tests/runtime/runtime_test_support.hpp"
+#include "tests/support/ray_caster_checks.hpp"
 
 namespace hlr::runtime {
 namespace {
@@ -39,6 +41,29 @@ TEST(Import, ReadsAMeshRelativeToTheScript) {
   EXPECT_NE(std::find(inputs.begin(), inputs.end(),
                       std::filesystem::weakly_canonical(dir.path() / "parts/cube.off")),
             inputs.end());
+}
+
+// An assembly exported as one mesh (examples/showcase/assembly.hls imports meshes/bracket.obj: a plate, a
+// post through it, a bar through the post) is one solid whose parts cross: the lines where they do are
+// drawn, and the frame passes the ray-casting oracle, its check of crossings within one solid included.
+TEST(Import, AnAssemblyInOneMeshShowsWhereItsPartsCross) {
+  const std::filesystem::path script =
+      std::filesystem::path(HLR_TEST_DATA_DIR).parent_path().parent_path() / "examples/showcase/assembly.hls";
+  const auto program = Program::load(script, "assembly.hls");
+  ASSERT_TRUE(program->parsed());
+  const FrameScene scene = program->evaluate({});
+  ASSERT_EQ(scene.scene.objects.size(), 1U);
+  ASSERT_TRUE(scene.scene.objects[0].solid->closed);
+  ASSERT_EQ(scene.cameras.size(), 1U);
+  const Camera& camera = scene.cameras[0].camera;
+  const FrameResult result = render_frame(scene.scene, camera);
+  std::size_t crossings = 0;
+  for (const VisibleSegment& s : result.segments) crossings += s.source == SegmentSource::Intersection;
+  // The post's outline on the plate's top (8 sides, those in front seen) and the bar entering the post.
+  EXPECT_GE(crossings, 6U);
+  const hlr::test::CheckReport report = hlr::test::check_frame(scene.scene, camera, result);
+  EXPECT_TRUE(report.ok()) << report.summary();
+  EXPECT_GT(report.intersection_expected, 0U) << report.summary();
 }
 
 TEST(Import, RepairsAreWarningsAtThePath) {

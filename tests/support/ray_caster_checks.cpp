@@ -315,6 +315,17 @@ CheckReport check_visible_not_missing(const Scene& scene, const RayCaster& oracl
   return r;
 }
 
+namespace {
+// Whether two faces of one solid have a vertex in common (then they meet there, and do not cross).
+bool share_vertex(const Face& x, const Face& y) {
+  for (const Ring& rx : x.rings)
+    for (VertexIndex u : rx.vertices)
+      for (const Ring& ry : y.rings)
+        if (std::find(ry.vertices.begin(), ry.vertices.end(), u) != ry.vertices.end()) return true;
+  return false;
+}
+}  // namespace
+
 CheckReport check_intersections(const Scene& scene, const RayCaster& oracle, const FrameResult& result,
                                 const CheckOptions& options) {
   CheckReport r;
@@ -342,9 +353,10 @@ CheckReport check_intersections(const Scene& scene, const RayCaster& oracle, con
       }
     }
   }
-  // (c2) visible crossings of faces of two closed solids are drawn.
+  // (c2) visible crossings of faces of two closed solids, or of two faces of one closed solid that share
+  // no vertex (parts of one mesh passing through each other), are drawn.
   for (std::uint32_t a = 0; a < n_objects; ++a)
-    for (std::uint32_t b = a + 1; b < n_objects; ++b) {
+    for (std::uint32_t b = a; b < n_objects; ++b) {
       const Solid& sa = *scene.objects[a].solid;
       const Solid& sb = *scene.objects[b].solid;
       if (!sa.closed || !sb.closed) continue;
@@ -356,7 +368,8 @@ CheckReport check_intersections(const Scene& scene, const RayCaster& oracle, con
           pair_pieces.push_back(i);
       }
       for (std::uint32_t fa = 0; fa < sa.faces.size(); ++fa)
-        for (std::uint32_t fb = 0; fb < sb.faces.size(); ++fb) {
+        for (std::uint32_t fb = a == b ? fa + 1 : 0; fb < sb.faces.size(); ++fb) {
+          if (a == b && share_vertex(sa.faces[fa], sb.faces[fb])) continue;
           const Vector3 na = oracle.normal(a, fa), nb = oracle.normal(b, fb);
           const Vector3 dir = cross(na, nb);
           if (length(dir) < 1e-6) continue;  // (nearly) parallel planes: no transversal crossing

@@ -7,8 +7,9 @@
 //       be covered by a returned piece of that object and edge (picture distance < 1e-6 × picture extent;
 //       edges seen end-on, shorter than 10 such distances on the picture, are skipped);
 //   (c) intersection lines: every Intersection piece lies on a face of both its objects and is not Hidden;
-//       and, between closed solids, every sampled point where two faces cross strictly inside both that the
-//       oracle calls Visible is covered by an Intersection piece of that pair of objects.
+//       and, between closed solids and within one closed solid (faces sharing no vertex), every sampled
+//       point where two faces cross strictly inside both that the oracle calls Visible is covered by an
+//       Intersection piece of that pair of objects.
 #pragma once
 
 #include <array>

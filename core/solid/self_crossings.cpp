@@ -1,0 +1,272 @@
+// Where faces of one solid cross: an assembly exported as one mesh, a scan that folds through itself.
+// Pairs of faces that may meet come from a uniform grid over the faces' boxes (cells about the size of
+// a typical face, so the work follows the number of nearby pairs, not the square of the face count);
+// each pair is then rejected cheaply by its planes or solved exactly as two solids' faces are.
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <utility>
+#include <vector>
+
+#include "core/parallel.hpp"
+#include "core/solid/face_crossing.hpp"
+#include "core/solid/solid.hpp"
+#include "core/tolerance.hpp"
+
+namespace hlr {
+namespace {
+
+struct FaceBox {
+  Point3 lo{1e300, 1e300, 1e300}, hi{-1e300, -1e300, -1e300};
+  void include(Point3 p) {
+    lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
+    hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
+  }
+  bool overlaps(const FaceBox& o, double tol) const {
+    return lo.x <= o.hi.x + tol && o.lo.x <= hi.x + tol && lo.y <= o.hi.y + tol && o.lo.y <= hi.y + tol &&
+           lo.z <= o.hi.z + tol && o.lo.z <= hi.z + tol;
+  }
+  double size() const { return std::max({hi.x - lo.x, hi.y - lo.y, hi.z - lo.z}); }
+};
+
+// Sorts entries by their cell (the upper 30 bits), keeping the face order within a cell, which they were
+// made in: two stable counting passes of 15 bits — linear, where a comparison sort was the finder's
+// largest cost.
+void sort_by_cell(std::vector<std::uint64_t>& entries) {
+  std::vector<std::uint64_t> buffer(entries.size());
+  std::vector<std::uint32_t> counts(1u << 15);
+  for (const int shift : {32, 47}) {
+    std::fill(counts.begin(), counts.end(), 0u);
+    for (std::uint64_t e : entries) ++counts[(e >> shift) & 0x7fff];
+    std::uint32_t sum = 0;
+    for (std::uint32_t& c : counts) sum += std::exchange(c, sum);
+    for (std::uint64_t e : entries) buffer[counts[(e >> shift) & 0x7fff]++] = e;
+    entries.swap(buffer);
+  }
+}
+
+// Per face, what the pair tests read: its box, its cell range, and (for faces of up to four vertices,
+// the common case) its vertices inline, so that telling neighbours apart touches no other memory.
+struct FaceInfo {
+  FaceBox box;
+  std::uint16_t lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0};
+  std::uint8_t count = 0;  // vertices inline; 0: more than four, read them from the face
+  VertexIndex v[4] = {0, 0, 0, 0};
+};
+
+class Finder {
+ public:
+  explicit Finder(const Solid& solid) : solid_(solid) {
+    double extent = 0;
+    for (Point3 p : solid.vertices) extent = std::max({extent, std::abs(p.x), std::abs(p.y), std::abs(p.z)});
+    tol_ = Tolerance::for_extent(extent).length;
+    info_.resize(solid.faces.size());
+    warp_.assign(solid.faces.size(), 0.0);
+    for (std::size_t f = 0; f < solid.faces.size(); ++f) {
+      const Face& face = solid.faces[f];
+      FaceInfo& info = info_[f];
+      for (const Ring& ring : face.rings)
+        for (VertexIndex v : ring.vertices) {
+          info.box.include(solid.vertices[v]);
+          warp_[f] = std::max(warp_[f], std::abs(solid.planes[f].signed_distance(solid.vertices[v])));
+        }
+      const auto& outer = face.rings[0].vertices;
+      if (face.rings.size() == 1 && outer.size() <= 4) {
+        info.count = static_cast<std::uint8_t>(outer.size());
+        std::copy(outer.begin(), outer.end(), info.v);
+      }
+    }
+  }
+
+  // What one thread finds, with its own buffers.
+  struct Part {
+    std::vector<VertexIndex> sorted;
+    FaceCrossingScratch scratch;
+    std::vector<CrossingPiece> pieces;
+    std::vector<SelfCrossing> found;
+  };
+
+  // Examines one pair of faces; appends what crosses.
+  void pair(FaceIndex a, FaceIndex b, Part& part) const {
+    if (a > b) std::swap(a, b);
+    const FaceInfo& ia = info_[a];
+    const FaceInfo& ib = info_[b];
+    if (!ia.box.overlaps(ib.box, tol_) || share_a_vertex(a, b, part.sorted)) return;
+    // A face its solid's options let off plane (legacy data) is only known to within its warp: crossings
+    // that small are noise.
+    const double tol = tol_ + warp_[a] + warp_[b];
+    if (!face_meets_plane(solid_, b, solid_.planes[a], tol) ||
+        !face_meets_plane(solid_, a, solid_.planes[b], tol))
+      return;
+    part.pieces.clear();
+    face_crossings(solid_, a, solid_, b, tol, part.scratch, part.pieces);
+    for (const CrossingPiece& p : part.pieces) part.found.push_back({p.p0, p.p1, a, b});
+  }
+
+  std::vector<SelfCrossing> all_pairs() const {
+    Part part;
+    const auto n = static_cast<FaceIndex>(solid_.faces.size());
+    for (FaceIndex a = 0; a < n; ++a)
+      for (FaceIndex b = a + 1; b < n; ++b) pair(a, b, part);
+    return std::move(part.found);
+  }
+
+  // The grid: cells of the median face size (at least 1/1000 of the solid's size on each axis, so cell
+  // numbers fit 10 bits); a face covering more than kMaxCells cells is met against every face instead.
+  // Cells are shared out over the cores; what each finds is joined in cell order.
+  std::vector<SelfCrossing> grid_pairs() {
+    const std::size_t n = info_.size();
+    FaceBox all;
+    std::vector<double> sizes(n);
+    for (std::size_t f = 0; f < n; ++f) {
+      all.include(info_[f].box.lo);
+      all.include(info_[f].box.hi);
+      sizes[f] = info_[f].box.size();
+    }
+    std::nth_element(sizes.begin(), sizes.begin() + static_cast<std::ptrdiff_t>(n / 2), sizes.end());
+    const double cell = std::max({sizes[n / 2], all.size() / 1000, tol_, Tolerance::kFloor});
+    auto index = [&](double v, double origin) {
+      return static_cast<std::uint16_t>(std::clamp(std::floor((v - origin) / cell), 0.0, 1023.0));
+    };
+    // One sort key per (cell, face): the cell's 30 bits above the face's 32, so a sort groups each cell's
+    // faces in face order.
+    std::vector<std::uint64_t> entries;
+    entries.reserve(n * 4);
+    std::vector<FaceIndex> big;
+    constexpr int kMaxCells = 64;
+    for (std::size_t f = 0; f < n; ++f) {
+      FaceInfo& fi = info_[f];
+      const FaceBox& b = fi.box;
+      fi.lo[0] = index(b.lo.x - tol_, all.lo.x), fi.hi[0] = index(b.hi.x + tol_, all.lo.x);
+      fi.lo[1] = index(b.lo.y - tol_, all.lo.y), fi.hi[1] = index(b.hi.y + tol_, all.lo.y);
+      fi.lo[2] = index(b.lo.z - tol_, all.lo.z), fi.hi[2] = index(b.hi.z + tol_, all.lo.z);
+      const int cells = (fi.hi[0] - fi.lo[0] + 1) * (fi.hi[1] - fi.lo[1] + 1) * (fi.hi[2] - fi.lo[2] + 1);
+      if (cells > kMaxCells) {
+        big.push_back(static_cast<FaceIndex>(f));
+        continue;
+      }
+      for (std::uint64_t x = fi.lo[0]; x <= fi.hi[0]; ++x)
+        for (std::uint64_t y = fi.lo[1]; y <= fi.hi[1]; ++y)
+          for (std::uint64_t z = fi.lo[2]; z <= fi.hi[2]; ++z)
+            entries.push_back(((x | (y << 10) | (z << 20)) << 32) | f);
+    }
+    sort_by_cell(entries);
+    // Chunks of whole cells, about kChunk entries each.
+    constexpr std::size_t kChunk = 4096;
+    std::vector<std::size_t> bounds{0};
+    for (std::size_t i = kChunk; i < entries.size(); i += kChunk) {
+      while (i < entries.size() && (entries[i] >> 32) == (entries[i - 1] >> 32)) ++i;
+      if (i < entries.size() && i > bounds.back()) bounds.push_back(i);
+    }
+    bounds.push_back(entries.size());
+    std::vector<Part> parts(bounds.size() - 1);
+    parallel_chunks(parts.size(), threads_for(entries.size(), 50000, 0), [&](std::size_t k) {
+      Part& part = parts[k];
+      for (std::size_t i = bounds[k]; i < bounds[k + 1];) {
+        const std::uint64_t key = entries[i] >> 32;
+        std::size_t end = i + 1;
+        while (end < bounds[k + 1] && (entries[end] >> 32) == key) ++end;
+        const auto cx = static_cast<std::uint16_t>(key & 1023),
+                   cy = static_cast<std::uint16_t>((key >> 10) & 1023),
+                   cz = static_cast<std::uint16_t>(key >> 20);
+        for (std::size_t p = i; p < end; ++p) {
+          const auto fa = static_cast<FaceIndex>(entries[p] & 0xffffffffu);
+          const FaceInfo& a = info_[fa];
+          for (std::size_t q = p + 1; q < end; ++q) {
+            const auto fb = static_cast<FaceIndex>(entries[q] & 0xffffffffu);
+            const FaceInfo& b = info_[fb];
+            // A pair sharing several cells is examined in the first of them only.
+            if (std::max(a.lo[0], b.lo[0]) != cx || std::max(a.lo[1], b.lo[1]) != cy ||
+                std::max(a.lo[2], b.lo[2]) != cz)
+              continue;
+            pair(fa, fb, part);
+          }
+        }
+        i = end;
+      }
+    });
+    std::vector<SelfCrossing> found;
+    for (Part& part : parts) found.insert(found.end(), part.found.begin(), part.found.end());
+    Part rest;
+    std::vector<char> is_big(n, 0);
+    for (FaceIndex f : big) is_big[f] = 1;
+    for (FaceIndex f : big)
+      for (std::size_t g = 0; g < n; ++g)
+        if (!is_big[g] || static_cast<FaceIndex>(g) > f) pair(f, static_cast<FaceIndex>(g), rest);
+    found.insert(found.end(), rest.found.begin(), rest.found.end());
+    return found;
+  }
+
+ private:
+  bool share_a_vertex(FaceIndex a, FaceIndex b, std::vector<VertexIndex>& sorted) const {
+    const FaceInfo& ia = info_[a];
+    const FaceInfo& ib = info_[b];
+    if (ia.count && ib.count) {
+      for (int i = 0; i < ia.count; ++i)
+        for (int j = 0; j < ib.count; ++j)
+          if (ia.v[i] == ib.v[j]) return true;
+      return false;
+    }
+    sorted.clear();
+    for (const Ring& r : solid_.faces[a].rings)
+      sorted.insert(sorted.end(), r.vertices.begin(), r.vertices.end());
+    std::sort(sorted.begin(), sorted.end());
+    for (const Ring& r : solid_.faces[b].rings)
+      for (VertexIndex v : r.vertices)
+        if (std::binary_search(sorted.begin(), sorted.end(), v)) return true;
+    return false;
+  }
+
+  const Solid& solid_;
+  double tol_ = 0;
+  std::vector<FaceInfo> info_;
+  std::vector<double> warp_;  // per face: the farthest of its vertices from its plane
+};
+
+std::vector<SelfCrossing> find_self_crossings(const Solid& solid) {
+  // Four faces at least: fewer cannot hold two that share no vertex and cross.
+  if (solid.faces.size() < 4 || solid.planes.size() != solid.faces.size()) return {};
+  Finder finder(solid);
+  // Below a few dozen faces every pair is cheaper than building the grid.
+  std::vector<SelfCrossing> found = solid.faces.size() <= 48 ? finder.all_pairs() : finder.grid_pairs();
+  // Sorted by faces, whatever order the pairs were met in; a pair's pieces keep their order.
+  std::stable_sort(found.begin(), found.end(), [](const SelfCrossing& x, const SelfCrossing& y) {
+    return x.face0 != y.face0 ? x.face0 < y.face0 : x.face1 < y.face1;
+  });
+  return found;
+}
+
+const std::vector<SelfCrossing> kNone;
+
+}  // namespace
+
+SelfCrossingCache& SelfCrossingCache::operator=(const SelfCrossingCache&) {
+  const auto* old = found_.exchange(nullptr);
+  if (old != &kNone) delete old;
+  return *this;
+}
+
+SelfCrossingCache& SelfCrossingCache::operator=(SelfCrossingCache&& other) noexcept {
+  const auto* old = found_.exchange(other.found_.exchange(nullptr));
+  if (old != &kNone) delete old;
+  return *this;
+}
+
+SelfCrossingCache::~SelfCrossingCache() {
+  const auto* old = found_.load();
+  if (old != &kNone) delete old;
+}
+
+const std::vector<SelfCrossing>& SelfCrossingCache::get(const Solid& solid) const {
+  if (const auto* found = found_.load(std::memory_order_acquire)) return *found;
+  // Two threads may both compute; the result does not depend on which one's copy is kept.
+  std::vector<SelfCrossing> crossings = find_self_crossings(solid);
+  const std::vector<SelfCrossing>* mine =
+      crossings.empty() ? &kNone : new std::vector<SelfCrossing>(std::move(crossings));
+  const std::vector<SelfCrossing>* expected = nullptr;
+  if (found_.compare_exchange_strong(expected, mine, std::memory_order_acq_rel)) return *mine;
+  if (mine != &kNone) delete mine;
+  return *expected;
+}
+
+}  // namespace hlr
