@@ -7,6 +7,7 @@
 #include <optional>
 
 #include "core/geometry/clip2d.hpp"
+#include "core/hlr/coincident_pieces.hpp"
 #include "core/hlr/face_grid.hpp"
 #include "core/hlr/frame_setup.hpp"
 #include "core/hlr/occlusion.hpp"
@@ -170,6 +171,7 @@ FrameResult render_frame(const Scene& scene, const Camera& camera, const HlrOpti
     result.segments.insert(result.segments.end(), part.begin(), part.end());
     std::vector<VisibleSegment>().swap(part);
   }
+  if (options.coincident_once) remove_covered_pieces(result.segments, options.threads);
   result.stats.face_tests = face_tests;
   result.stats.visible_segments = static_cast<std::size_t>(std::count_if(
       result.segments.begin(), result.segments.end(), [](const VisibleSegment& s) { return !s.hidden; }));

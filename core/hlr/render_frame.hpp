@@ -17,6 +17,9 @@ namespace hlr {
 struct HlrOptions {
   bool include_hidden = false;     // also return hidden pieces (hidden = true), for a dashed layer
   bool intersection_lines = true;  // draw where faces cross (of two solids, or of one solid)
+  // A visible piece that earlier pieces on the same line already draw (solids sharing an edge line) is
+  // left out (core/hlr/coincident_pieces.hpp).
+  bool coincident_once = true;
   unsigned threads = 0;  // 0: the caller's task arena (every core unless --jobs bounds it); 1: this thread
   // Checked between chunks of work (a fraction of a millisecond each): when it becomes true the
   // frame stops with RenderCancelled (the REPL's Ctrl-C).

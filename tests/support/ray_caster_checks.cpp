@@ -266,10 +266,20 @@ CheckReport check_drawn_not_hidden(const Scene& scene, const RayCaster& oracle, 
   return r;
 }
 
+namespace {
+double world_segment_distance(Point3 p, Point3 a, Point3 b) {
+  const Vector3 d = b - a;
+  const double len2 = dot(d, d);
+  const double t = len2 > 0 ? std::clamp(dot(p - a, d) / len2, 0.0, 1.0) : 0.0;
+  return distance(p, a + t * d);
+}
+}  // namespace
+
 CheckReport check_visible_not_missing(const Scene& scene, const RayCaster& oracle, const FrameResult& result,
                                       const CheckOptions& options) {
   CheckReport r;
   const Camera& cam = oracle.camera();
+  const double tol = oracle.tolerance();
   const double eps = options.picture_relative * picture_extent(scene, cam, result);
   const auto pieces = pieces_by_edge(result);
   for (std::uint32_t o = 0; o < scene.objects.size(); ++o) {
@@ -298,6 +308,13 @@ CheckReport check_visible_not_missing(const Scene& scene, const RayCaster& oracl
         if (it != pieces.end())
           for (std::size_t si : it->second)
             covered = covered || point_segment_distance(pic, result.segments[si].s0, result.segments[si].s1) < eps;
+        // Where another solid's edge lies on this one, the line is drawn once (by either): a visible
+        // piece of any object through the same world point, on the same picture point, draws it.
+        for (std::size_t si = 0; !covered && si < result.segments.size(); ++si) {
+          const VisibleSegment& s = result.segments[si];
+          covered = !s.hidden && world_segment_distance(p, s.p0, s.p1) <= tol &&
+                    point_segment_distance(pic, s.s0, s.s1) < eps;
+        }
         if (!covered) {
           std::ostringstream m;
           m << "missing: object " << o << " '" << scene.objects[o].name << "' edge " << e << " ("

@@ -5,7 +5,8 @@
 //   (b) nothing visible is missing: samples along every drawn-candidate edge (Feature, Boundary, Marking,
 //       Free; Smooth only on the contour) that the oracle calls Visible and that lie inside the frame must
 //       be covered by a returned piece of that object and edge (picture distance < 1e-6 × picture extent;
-//       edges seen end-on, shorter than 10 such distances on the picture, are skipped);
+//       edges seen end-on, shorter than 10 such distances on the picture, are skipped) — or, where another
+//       solid's edge lies on it (drawn once), by a visible piece of any object through that world point;
 //   (c) intersection lines: every Intersection piece lies on a face of both its objects and is not Hidden;
 //       and, between closed solids and within one closed solid (faces sharing no vertex), every sampled
 //       point where two faces cross strictly inside both that the oracle calls Visible is covered by an

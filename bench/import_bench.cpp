@@ -1,0 +1,139 @@
+// Mesh import (stdlib/mesh_*.cpp) at the sizes people import: the bumpy closed triangle mesh of 10^4 to
+// 10^6 faces written as OFF, OBJ, ASCII STL and binary STL text in memory (by this program, with
+// std::to_chars: shortest round-trip numbers, as exporters write them), then parsed, repaired and built
+// into a Solid. Counters: faces, bytes, MB/s of input. bench/README.md has the figures.
+//   import_bench --benchmark_filter='Off/75000'
+#include <benchmark/benchmark.h>
+
+#include <charconv>
+#include <cstring>
+#include <map>
+#include <string>
+#include <utility>
+
+#include "stdlib/generators.hpp"
+#include "stdlib/mesh_import.hpp"
+
+namespace {
+
+void append_number(std::string& out, double v) {
+  char buf[32];
+  const auto r = std::to_chars(buf, buf + sizeof buf, v);
+  out.append(buf, r.ptr);
+}
+
+void append_point(std::string& out, hlr::Point3 p) {
+  append_number(out, p.x);
+  out += ' ';
+  append_number(out, p.y);
+  out += ' ';
+  append_number(out, p.z);
+}
+
+std::string off_text(const hlr::Solid& s) {
+  std::string out =
+      "OFF\n" + std::to_string(s.vertices.size()) + " " + std::to_string(s.faces.size()) + " 0\n";
+  for (hlr::Point3 p : s.vertices) {
+    append_point(out, p);
+    out += '\n';
+  }
+  for (const hlr::Face& f : s.faces) {
+    out += std::to_string(f.rings[0].vertices.size());
+    for (hlr::VertexIndex v : f.rings[0].vertices) out += ' ' + std::to_string(v);
+    out += '\n';
+  }
+  return out;
+}
+
+std::string obj_text(const hlr::Solid& s) {
+  std::string out = "o mesh\n";
+  for (hlr::Point3 p : s.vertices) {
+    out += "v ";
+    append_point(out, p);
+    out += '\n';
+  }
+  for (const hlr::Face& f : s.faces) {
+    out += 'f';
+    for (hlr::VertexIndex v : f.rings[0].vertices) out += ' ' + std::to_string(v + 1);
+    out += '\n';
+  }
+  return out;
+}
+
+std::string stl_ascii(const hlr::Solid& s) {
+  std::string out = "solid mesh\n";
+  for (const hlr::Face& f : s.faces) {
+    out += "facet normal 0 0 0\n outer loop\n";
+    for (hlr::VertexIndex v : f.rings[0].vertices) {
+      out += "  vertex ";
+      append_point(out, s.vertices[v]);
+      out += '\n';
+    }
+    out += " endloop\nendfacet\n";
+  }
+  out += "endsolid mesh\n";
+  return out;
+}
+
+std::string stl_binary(const hlr::Solid& s) {
+  std::string out(80, ' ');
+  const auto n = static_cast<std::uint32_t>(s.faces.size());
+  out.append(reinterpret_cast<const char*>(&n), 4);
+  for (const hlr::Face& f : s.faces) {
+    float rec[12] = {};
+    for (int k = 0; k < 3; ++k) {
+      const hlr::Point3 p = s.vertices[f.rings[0].vertices[static_cast<std::size_t>(k)]];
+      rec[3 + 3 * k] = static_cast<float>(p.x), rec[4 + 3 * k] = static_cast<float>(p.y),
+                  rec[5 + 3 * k] = static_cast<float>(p.z);
+    }
+    out.append(reinterpret_cast<const char*>(rec), sizeof rec);
+    out.append(2, '\0');
+  }
+  return out;
+}
+
+// One mesh per size, kept while the benchmarks of that size run.
+const hlr::Solid& mesh(int faces) {
+  static std::pair<int, hlr::Solid> cache{-1, {}};
+  if (cache.first != faces) cache = {faces, hlr::stdlib::closed_mesh(faces, 1)};
+  return cache.second;
+}
+
+template <typename Make, typename Import>
+void run(benchmark::State& state, Make make, Import import) {
+  const hlr::Solid& solid = mesh(static_cast<int>(state.range(0)));
+  const std::string data = make(solid);
+  std::size_t faces = 0;
+  for (auto _ : state) {
+    const hlr::stdlib::ImportedMesh m = import(data);
+    faces = m.solid.faces.size();
+    benchmark::DoNotOptimize(faces);
+  }
+  state.counters["faces"] = static_cast<double>(faces);
+  state.counters["MB"] = static_cast<double>(data.size()) / 1e6;
+  state.SetBytesProcessed(static_cast<std::int64_t>(state.iterations()) *
+                          static_cast<std::int64_t>(data.size()));
+}
+
+void Off(benchmark::State& s) {
+  run(s, off_text, [](const std::string& d) { return hlr::stdlib::import_off(d, "mesh.off"); });
+}
+void Obj(benchmark::State& s) {
+  run(s, obj_text, [](const std::string& d) { return hlr::stdlib::import_obj(d, "mesh.obj"); });
+}
+void StlAscii(benchmark::State& s) {
+  run(s, stl_ascii, [](const std::string& d) { return hlr::stdlib::import_stl(d, "mesh.stl"); });
+}
+void StlBinary(benchmark::State& s) {
+  run(s, stl_binary, [](const std::string& d) { return hlr::stdlib::import_stl(d, "mesh.stl"); });
+}
+
+}  // namespace
+
+// 75 000 faces is the Stanford bunny's size (69 451 triangles in CGAL's bunny.off, 72 027 in others).
+BENCHMARK(Off)->Arg(10000)->Arg(75000)->Arg(1000000)->Unit(benchmark::kMillisecond);
+BENCHMARK(Obj)->Arg(75000)->Unit(benchmark::kMillisecond);
+BENCHMARK(StlAscii)->Arg(75000)->Unit(benchmark::kMillisecond);
+BENCHMARK(StlBinary)->Arg(75000)->Arg(1000000)->Unit(benchmark::kMillisecond);
+
+BENCHMARK_MAIN();
