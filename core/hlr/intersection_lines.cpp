@@ -3,23 +3,12 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/geometry/box3.hpp"
 #include "core/solid/face_crossing.hpp"
 #include "core/tolerance.hpp"
 
 namespace hlr {
 namespace {
-
-struct Box3 {
-  Point3 lo{1e300, 1e300, 1e300}, hi{-1e300, -1e300, -1e300};
-  void include(Point3 p) {
-    lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
-    hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
-  }
-  bool overlaps(const Box3& o, double tol) const {
-    return lo.x <= o.hi.x + tol && o.lo.x <= hi.x + tol && lo.y <= o.hi.y + tol && o.lo.y <= hi.y + tol &&
-           lo.z <= o.hi.z + tol && o.lo.z <= hi.z + tol;
-  }
-};
 
 Box3 face_box(const Solid& solid, const Face& face) {
   Box3 b;

@@ -8,6 +8,7 @@
 #include <utility>
 #include <vector>
 
+#include "core/geometry/box3.hpp"
 #include "core/parallel.hpp"
 #include "core/solid/face_crossing.hpp"
 #include "core/solid/solid.hpp"
@@ -15,19 +16,6 @@
 
 namespace hlr {
 namespace {
-
-struct FaceBox {
-  Point3 lo{1e300, 1e300, 1e300}, hi{-1e300, -1e300, -1e300};
-  void include(Point3 p) {
-    lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
-    hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
-  }
-  bool overlaps(const FaceBox& o, double tol) const {
-    return lo.x <= o.hi.x + tol && o.lo.x <= hi.x + tol && lo.y <= o.hi.y + tol && o.lo.y <= hi.y + tol &&
-           lo.z <= o.hi.z + tol && o.lo.z <= hi.z + tol;
-  }
-  double size() const { return std::max({hi.x - lo.x, hi.y - lo.y, hi.z - lo.z}); }
-};
 
 // Sorts entries by their cell (the upper 30 bits), keeping the face order within a cell, which they were
 // made in: two stable counting passes of 15 bits — linear, where a comparison sort was the finder's
@@ -48,7 +36,7 @@ void sort_by_cell(std::vector<std::uint64_t>& entries) {
 // Per face, what the pair tests read: its box, its cell range, and (for faces of up to four vertices,
 // the common case) its vertices inline, so that telling neighbours apart touches no other memory.
 struct FaceInfo {
-  FaceBox box;
+  Box3 box;
   std::uint16_t lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0};
   std::uint8_t count = 0;  // vertices inline; 0: more than four, read them from the face
   VertexIndex v[4] = {0, 0, 0, 0};
@@ -116,15 +104,15 @@ class Finder {
   // Cells are shared out over the cores; what each finds is joined in cell order.
   std::vector<SelfCrossing> grid_pairs() {
     const std::size_t n = info_.size();
-    FaceBox all;
+    Box3 all;
     std::vector<double> sizes(n);
     for (std::size_t f = 0; f < n; ++f) {
       all.include(info_[f].box.lo);
       all.include(info_[f].box.hi);
-      sizes[f] = info_[f].box.size();
+      sizes[f] = info_[f].box.largest_side();
     }
     std::nth_element(sizes.begin(), sizes.begin() + static_cast<std::ptrdiff_t>(n / 2), sizes.end());
-    const double cell = std::max({sizes[n / 2], all.size() / 1000, tol_, Tolerance::kFloor});
+    const double cell = std::max({sizes[n / 2], all.largest_side() / 1000, tol_, Tolerance::kFloor});
     auto index = [&](double v, double origin) {
       return static_cast<std::uint16_t>(std::clamp(std::floor((v - origin) / cell), 0.0, 1023.0));
     };
@@ -136,7 +124,7 @@ class Finder {
     constexpr int kMaxCells = 64;
     for (std::size_t f = 0; f < n; ++f) {
       FaceInfo& fi = info_[f];
-      const FaceBox& b = fi.box;
+      const Box3& b = fi.box;
       fi.lo[0] = index(b.lo.x - tol_, all.lo.x), fi.hi[0] = index(b.hi.x + tol_, all.lo.x);
       fi.lo[1] = index(b.lo.y - tol_, all.lo.y), fi.hi[1] = index(b.hi.y + tol_, all.lo.y);
       fi.lo[2] = index(b.lo.z - tol_, all.lo.z), fi.hi[2] = index(b.hi.z + tol_, all.lo.z);
