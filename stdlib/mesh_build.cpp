@@ -139,9 +139,8 @@ class Builder {
 
   void add_face(std::size_t f) {
     const RawFace& face = raw_.faces[f];
-    auto name = [&] { return face_name(f); };  // made only for a message
+    const std::string name = face_name(f);
     std::vector<std::uint32_t> ring;
-    ring.reserve(face.vertices.size());
     bool repeated = false;
     std::uint32_t repeated_vertex = 0;
     for (std::uint32_t raw_v : face.vertices) {
@@ -158,15 +157,14 @@ class Builder {
       repeated = true;
       ring.pop_back();
     }
-    std::vector<std::uint32_t>& distinct = distinct_;
-    distinct.assign(ring.begin(), ring.end());
+    std::vector<std::uint32_t> distinct = ring;
     std::sort(distinct.begin(), distinct.end());
     distinct.erase(std::unique(distinct.begin(), distinct.end()), distinct.end());
     if (distinct.size() < 3) {
       warnings_.add(
           "degenerate-face",
           at(face.where,
-             name() + " has only " + std::to_string(distinct.size()) +
+             name + " has only " + std::to_string(distinct.size()) +
                  (distinct.size() == 1 ? " distinct vertex" : " distinct vertices") + "; dropped it",
              "a face needs at least three distinct vertices"));
       return;
@@ -174,17 +172,7 @@ class Builder {
 
     // Geometry: Newell normal, size, and the worst distance from the plane through the centroid.
     const std::vector<Point3>& pos = positions_;
-    // Newell's normal (as core's newell_normal, relative to the first vertex), without copying the ring.
-    Vector3 normal{};
-    {
-      const Point3 o = pos[ring[0]];
-      for (std::size_t i = 0; i < ring.size(); ++i) {
-        const Vector3 a = pos[ring[i]] - o, b = pos[ring[(i + 1) % ring.size()]] - o;
-        normal.x += (a.y - b.y) * (a.z + b.z);
-        normal.y += (a.z - b.z) * (a.x + b.x);
-        normal.z += (a.x - b.x) * (a.y + b.y);
-      }
-    }
+    const Vector3 normal = newell_normal(pos, Ring{ring});
     Point3 lo = pos[ring[0]], hi = lo;
     Vector3 sum{};
     for (std::uint32_t v : ring) {
@@ -196,13 +184,13 @@ class Builder {
     // The builder's zero-area floor is kRelative · size²; dropping up to 4× that keeps us clear of it.
     if (!(length(normal) > 4 * Tolerance::kRelative * std::max(size, Tolerance::kFloor) * size)) {
       warnings_.add("degenerate-face",
-                    at(face.where, name() + " has zero area (its vertices are collinear); dropped it",
+                    at(face.where, name + " has zero area (its vertices are collinear); dropped it",
                        "remove the face from the file"));
       return;
     }
     if (repeated)
       warnings_.add("repeated-vertex", at(face.where,
-                                          name() + " lists vertex " + vertex_name(repeated_vertex) +
+                                          name + " lists vertex " + vertex_name(repeated_vertex) +
                                               " twice in a row; dropped the repeat",
                                           ""));
     if (is_duplicate(ring, f)) return;
@@ -221,7 +209,7 @@ class Builder {
       std::vector<Triangle> triangles;
       if (!triangulate(pos, ring, normal, triangles, budget_))
         fail_at(face.where,
-                name() + " is not planar and has too many vertices (" + std::to_string(ring.size()) +
+                name + " is not planar and has too many vertices (" + std::to_string(ring.size()) +
                     ") to triangulate",
                 "split the polygon into planar faces before importing");
       std::size_t kept = 0;
@@ -235,7 +223,7 @@ class Builder {
         ++kept;
       }
       warnings_.add("non-planar", at(face.where,
-                                     name() + " is not planar (vertex " + vertex_name(worst_vertex) + " lies " +
+                                     name + " is not planar (vertex " + vertex_name(worst_vertex) + " lies " +
                                          format_for_message(worst) + " off its plane); split it into " +
                                          std::to_string(kept) + " triangles",
                                      "the split lines are drawn unless a crease angle hides them; model the "
@@ -249,11 +237,9 @@ class Builder {
   // compared by two independent 64-bit hashes of that cycle: a false match among 10^7 faces has odds
   // near 10^-25, and no face has to be stored twice.
   bool is_duplicate(const std::vector<std::uint32_t>& ring, std::size_t f) {
-    std::vector<std::uint32_t>& r = cycle_;
-    r.assign(ring.begin(), ring.end());
+    std::vector<std::uint32_t> r = ring;
     std::rotate(r.begin(), std::min_element(r.begin(), r.end()), r.end());
-    std::vector<std::uint32_t>& back = cycle_back_;
-    back.assign(r.rbegin(), r.rend());
+    std::vector<std::uint32_t> back(r.rbegin(), r.rend());
     std::rotate(back.begin(), std::min_element(back.begin(), back.end()), back.end());
     const std::vector<std::uint32_t>& key = std::min(r, back);
     FaceKey h{key.size(), ~std::uint64_t{key.size()}};
@@ -454,7 +440,6 @@ class Builder {
   };
   std::unordered_map<FaceKey, std::size_t, FaceKeyHash> seen_;  // cycle of a kept face → its file face
   std::int64_t budget_ = kTriangulationBudget;
-  std::vector<std::uint32_t> distinct_, cycle_, cycle_back_;  // per-face buffers, reused
 };
 
 }  // namespace

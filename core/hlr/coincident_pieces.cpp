@@ -16,9 +16,8 @@ namespace {
 struct Along {
   double t, off;
 };
-template <typename P>
-Along along(P a, P b, P q) {
-  const auto d = b - a;
+Along along(Point3 a, Point3 b, Point3 q) {
+  const Vector3 d = b - a;
   const double len2 = dot(d, d);
   if (len2 <= 0) return {0, distance(a, q)};
   const double t = dot(q - a, d) / len2;
@@ -49,8 +48,8 @@ std::size_t remove_covered_pieces(std::vector<VisibleSegment>& segments, unsigne
   // one piece long, so a cell holds a few): pieces on one line share cells along it.
   const double side = std::max({box.width(), box.height(), ptol, Tolerance::kFloor});
   const int cells = std::clamp(static_cast<int>(std::sqrt(static_cast<double>(count))), 1, 2048);
-  const double cell = side / cells * (1 + 1e-9);
-  const double grow = 2 * ptol;  // a piece is entered in every cell its line comes within this of
+  const double cell = side / cells;  // cell_of clamps the far border into the last cell
+  const double grow = 2 * ptol;      // a piece is entered in every cell its line comes within this of
   auto cell_of = [&](double v, double lo) {
     return std::clamp(static_cast<int>(std::floor((v - lo) / cell)), 0, cells - 1);
   };
@@ -62,17 +61,12 @@ std::size_t remove_covered_pieces(std::vector<VisibleSegment>& segments, unsigne
     const double a_major = along_x ? a.x : a.y, b_major = along_x ? b.x : b.y;
     const double a_minor = along_x ? a.y : a.x, b_minor = along_x ? b.y : b.x;
     const double major_lo = along_x ? box.xmin : box.ymin, minor_lo = along_x ? box.ymin : box.xmin;
-    const double m0 = std::min(a_major, b_major) - grow, m1 = std::max(a_major, b_major) + grow;
+    const double lo = std::min(a_major, b_major), hi = std::max(a_major, b_major);
     const double slope = b_major != a_major ? (b_minor - a_minor) / (b_major - a_major) : 0;
-    for (int i = cell_of(m0, major_lo); i <= cell_of(m1, major_lo); ++i) {
-      // The line's minor coordinate over this column, clamped to the piece.
-      const double c0 = std::max(m0, major_lo + i * cell), c1 = std::min(m1, major_lo + (i + 1) * cell);
-      const double v0 =
-          a_minor +
-          slope * (std::clamp(c0, std::min(a_major, b_major), std::max(a_major, b_major)) - a_major);
-      const double v1 =
-          a_minor +
-          slope * (std::clamp(c1, std::min(a_major, b_major), std::max(a_major, b_major)) - a_major);
+    // The line's minor coordinate at major coordinate m, m clamped to the piece.
+    auto minor_at = [&](double m) { return a_minor + slope * (std::clamp(m, lo, hi) - a_major); };
+    for (int i = cell_of(lo - grow, major_lo); i <= cell_of(hi + grow, major_lo); ++i) {
+      const double v0 = minor_at(major_lo + i * cell), v1 = minor_at(major_lo + (i + 1) * cell);
       for (int j = cell_of(std::min(v0, v1) - grow, minor_lo);
            j <= cell_of(std::max(v0, v1) + grow, minor_lo); ++j)
         visit(along_x ? i + j * cells : j + i * cells);

@@ -15,7 +15,6 @@
 #include <cstdlib>
 #include <iostream>
 #include <numbers>
-#include <random>
 #include <sstream>
 #include <string>
 
@@ -25,6 +24,7 @@
 #include "stdlib/generators.hpp"
 #include "tests/support/ray_caster.hpp"
 #include "tests/support/ray_caster_checks.hpp"
+#include "tests/support/seeded_rng.hpp"
 
 namespace hlr::test {
 namespace {
@@ -48,21 +48,6 @@ const char* family_name(int f) {
   return names[f];
 }
 
-// Uniform in [a, b) from mt19937's raw output (whose sequence the standard fixes; the distributions'
-// algorithms are implementation-defined, which would make seeds unportable).
-struct Rng {
-  std::mt19937 engine;
-  explicit Rng(unsigned seed) : engine(seed) {}
-  double operator()(double a, double b) { return a + (b - a) * (static_cast<double>(engine()) / 4294967296.0); }
-  int integer(int lo, int hi) { return lo + static_cast<int>(engine() % static_cast<unsigned>(hi - lo + 1)); }
-  Point3 point(Point3 lo, Point3 hi) { return {(*this)(lo.x, hi.x), (*this)(lo.y, hi.y), (*this)(lo.z, hi.z)}; }
-  Vector3 direction() {
-    for (;;) {
-      const Vector3 v{(*this)(-1, 1), (*this)(-1, 1), (*this)(-1, 1)};
-      if (length(v) > 0.2 && length(v) <= 1) return normalize(v);
-    }
-  }
-};
 
 struct Case {
   std::string description;

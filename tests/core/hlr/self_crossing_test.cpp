@@ -7,7 +7,6 @@
 
 #include <cmath>
 #include <numbers>
-#include <random>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -19,6 +18,7 @@
 #include "stdlib/generators.hpp"
 #include "tests/support/ray_caster.hpp"
 #include "tests/support/ray_caster_checks.hpp"
+#include "tests/support/seeded_rng.hpp"
 
 namespace hlr::test {
 namespace {
@@ -157,23 +157,6 @@ TEST(SelfCrossing, CrossedToriOnTheGrid) {
 
 // ---- random assemblies ----------------------------------------------------------------------------
 
-struct Rng {
-  std::mt19937 engine;
-  explicit Rng(unsigned seed) : engine(seed) {}
-  double operator()(double a, double b) {
-    return a + (b - a) * (static_cast<double>(engine()) / 4294967296.0);
-  }
-  int integer(int lo, int hi) { return lo + static_cast<int>(engine() % static_cast<unsigned>(hi - lo + 1)); }
-  Point3 point(Point3 lo, Point3 hi) {
-    return {(*this)(lo.x, hi.x), (*this)(lo.y, hi.y), (*this)(lo.z, hi.z)};
-  }
-  Vector3 direction() {
-    for (;;) {
-      const Vector3 v{(*this)(-1, 1), (*this)(-1, 1), (*this)(-1, 1)};
-      if (length(v) > 0.2 && length(v) <= 1) return normalize(v);
-    }
-  }
-};
 
 constexpr int kKinds = 4;
 constexpr int kSeeds = 15 * kKinds;

@@ -5,22 +5,16 @@
 #include <cmath>
 #include <cstdint>
 #include <numeric>
-#include <random>
 #include <tuple>
 #include <vector>
 
 #include "core/plan/grid_point.hpp"
 #include "core/plan/pen_plan.hpp"
+#include "tests/support/seeded_rng.hpp"
 
 namespace hlr::plan_test {
 
-// Uniform in [a, b) from mt19937's raw output (portable across standard libraries).
-struct Rng {
-  std::mt19937 engine;
-  explicit Rng(unsigned seed) : engine(seed) {}
-  double operator()(double a, double b) { return a + (b - a) * (static_cast<double>(engine()) / 4294967296.0); }
-  int integer(int lo, int hi) { return lo + static_cast<int>(engine() % static_cast<unsigned>(hi - lo + 1)); }
-};
+using Rng = hlr::test::Rng;  // tests/support/seeded_rng.hpp
 
 inline GridPoint to_grid(Point2 p, double grid) { return {std::llround(p.x / grid), std::llround(p.y / grid)}; }
 
