@@ -67,8 +67,8 @@ ImportedMesh import_albers(std::string_view ver_text, std::string_view sur_text,
     const std::vector<Token>& t = sur.tokens();
     if (t.empty()) continue;
     const LineContext ctx(sur_name, sur.line());
-    const std::string surface = "surface " + std::to_string(raw.faces.size() + 1);
-    if (raw.faces.size() >= options.max_faces)
+    const std::string surface = "surface " + std::to_string(raw.face_count() + 1);
+    if (raw.face_count() >= options.max_faces)
       ctx.fail(t[0].column, "the file has more than " + std::to_string(options.max_faces) + " surfaces",
                "raise the face limit or simplify the object");
     const std::int64_t n = ctx.integer(t[0], "the edge count", 1, 0x7FFFFFFF);
@@ -81,8 +81,6 @@ ImportedMesh import_albers(std::string_view ver_text, std::string_view sur_text,
                    (listed == n ? " (the loop must end by repeating its first vertex)" : ""),
                kSurHint);
     }
-    RawFace f;
-    f.where = {1, ctx.line(), t[0].column, -1};
     std::int64_t first = 0;
     for (std::size_t i = 1; i < t.size(); ++i) {
       const std::int64_t v =
@@ -94,16 +92,16 @@ ImportedMesh import_albers(std::string_view ver_text, std::string_view sur_text,
             "vertex numbers count the lines of " + ver_name + " from 1");
       if (i == 1) first = v;
       if (i + 1 < t.size())
-        f.vertices.push_back(static_cast<std::uint32_t>(v - 1));
+        raw.face_vertices.push_back(static_cast<std::uint32_t>(v - 1));
       else if (v != first)
         ctx.fail(t[i].column,
                  surface + " ends with vertex " + std::to_string(v) + " instead of its first vertex " +
                      std::to_string(first),
                  kSurHint);
     }
-    raw.faces.push_back(std::move(f));
+    raw.end_face({1, ctx.line(), t[0].column, -1});
   }
-  if (raw.faces.empty()) fail(sur_name, 0, 0, "the surface file holds no surfaces", kSurHint);
+  if (raw.face_count() == 0) fail(sur_name, 0, 0, "the surface file holds no surfaces", kSurHint);
   return build_mesh(std::move(raw), options);
 }
 

@@ -7,7 +7,6 @@
 #include <cmath>
 #include <map>
 #include <optional>
-#include <unordered_map>
 
 #include "core/format_number.hpp"
 #include "core/solid/solid_builder.hpp"
@@ -15,6 +14,51 @@
 #include "stdlib/mesh_detail.hpp"
 
 namespace hlr::stdlib::mesh_detail {
+
+// ---- ExactPointIndex -------------------------------------------------------------------------------------
+
+namespace {
+
+std::size_t slot_hash(const std::uint64_t key[3]) {
+  std::uint64_t h = key[0] * 0x9E3779B97F4A7C15ull;
+  h = (h ^ (h >> 29) ^ key[1]) * 0xBF58476D1CE4E5B9ull;
+  h = (h ^ (h >> 32) ^ key[2]) * 0x94D049BB133111EBull;
+  return static_cast<std::size_t>(h ^ (h >> 31));
+}
+
+}  // namespace
+
+ExactPointIndex::ExactPointIndex(std::size_t expected)
+    : slots_(std::bit_ceil(std::max<std::size_t>(16, 2 * expected)), Slot{{0, 0, 0}, kEmpty}) {}
+
+void ExactPointIndex::grow() {
+  std::vector<Slot> old(2 * slots_.size(), Slot{{0, 0, 0}, kEmpty});
+  old.swap(slots_);
+  const std::size_t mask = slots_.size() - 1;
+  for (const Slot& slot : old) {
+    if (slot.index == kEmpty) continue;
+    std::size_t s = slot_hash(slot.key) & mask;
+    while (slots_[s].index != kEmpty) s = (s + 1) & mask;
+    slots_[s] = slot;
+  }
+}
+
+std::uint32_t ExactPointIndex::insert(Point3 p, std::uint32_t index) {
+  if (2 * (size_ + 1) > slots_.size()) grow();
+  const std::uint64_t key[3] = {std::bit_cast<std::uint64_t>(p.x + 0.0),
+                                std::bit_cast<std::uint64_t>(p.y + 0.0),
+                                std::bit_cast<std::uint64_t>(p.z + 0.0)};  // -0 + 0 = +0
+  const std::size_t mask = slots_.size() - 1;
+  for (std::size_t s = slot_hash(key) & mask;; s = (s + 1) & mask) {
+    Slot& slot = slots_[s];
+    if (slot.index == kEmpty) {
+      slot = {{key[0], key[1], key[2]}, index};
+      ++size_;
+      return index;
+    }
+    if (slot.key[0] == key[0] && slot.key[1] == key[1] && slot.key[2] == key[2]) return slot.index;
+  }
+}
 
 namespace {
 
@@ -66,24 +110,63 @@ class Builder {
 
   ImportedMesh run() {
     weld();
-    seen_.reserve(raw_.faces.size());  // faces already read: backed by data
-    for (std::size_t f = 0; f < raw_.faces.size(); ++f) add_face(f);
+    const std::size_t n = raw_.face_count();
+    // Faces already read: backed by data.
+    out_vertices_.reserve(raw_.face_vertices.size());
+    out_ends_.reserve(n);
+    out_raw_.reserve(n);
+    seen_ = FaceCycleSet(n);
+    for (std::size_t f = 0; f < n; ++f) add_face(f);
     for (std::size_t l = 0; l < raw_.lines.size(); ++l) add_line(l);
-    if (faces_.empty() && lines_.empty())
+    if (out_ends_.empty() && lines_.empty())
       fail(raw_.files.back(), 0, 0,
-           raw_.faces.empty() ? "the file defines no faces" : "every face of the file is degenerate",
+           n == 0 ? "the file defines no faces" : "every face of the file is degenerate",
            "a mesh needs at least one face with three distinct, non-collinear vertices");
     return build();
   }
 
  private:
-  struct BuiltFace {
-    std::vector<std::uint32_t> ring;  // raw vertex indices (canonical after welding)
-    std::size_t raw;                  // index of the file's face
-  };
   struct BuiltLine {
     std::uint32_t a, b;
     std::size_t raw;
+  };
+
+  // Faces by their cycle of vertices (either direction, any starting vertex), kept as two independent
+  // 64-bit hashes of the canonical cycle: a false match among 10^7 faces has odds near 10^-25, and no face
+  // has to be stored twice. Open addressing, like ExactPointIndex.
+  class FaceCycleSet {
+   public:
+    explicit FaceCycleSet(std::size_t expected = 0)
+        : slots_(std::bit_ceil(std::max<std::size_t>(16, 2 * expected)), Slot{0, 0, kEmpty}) {}
+    // The face stored under (a, b), or `face` (now stored) when the cycle is new.
+    std::size_t insert(std::uint64_t a, std::uint64_t b, std::size_t face) {
+      if (2 * (size_ + 1) > slots_.size()) grow();
+      const std::size_t mask = slots_.size() - 1;
+      for (std::size_t s = static_cast<std::size_t>(a) & mask;; s = (s + 1) & mask) {
+        if (slots_[s].face == kEmpty) {
+          slots_[s] = {a, b, face};
+          ++size_;
+          return face;
+        }
+        if (slots_[s].a == a && slots_[s].b == b) return slots_[s].face;
+      }
+    }
+
+   private:
+    struct Slot {
+      std::uint64_t a, b;
+      std::size_t face;
+    };
+    static constexpr std::size_t kEmpty = ~std::size_t{0};
+    void grow() {
+      std::vector<Slot> old(2 * slots_.size(), Slot{0, 0, kEmpty});
+      old.swap(slots_);
+      size_ = 0;
+      for (const Slot& slot : old)
+        if (slot.face != kEmpty) insert(slot.a, slot.b, slot.face);
+    }
+    std::vector<Slot> slots_;
+    std::size_t size_ = 0;
   };
 
   MeshProblem at(const Source& s, std::string message, std::string hint = {}) const {
@@ -92,8 +175,8 @@ class Builder {
   }
   std::string face_name(std::size_t f) const {
     std::string s = std::string(raw_.face_noun) + " " + std::to_string(f + 1);
-    if (raw_.faces[f].where.offset >= 0)
-      s += " (byte offset " + std::to_string(raw_.faces[f].where.offset) + ")";
+    if (raw_.face_sources[f].offset >= 0)
+      s += " (byte offset " + std::to_string(raw_.face_sources[f].offset) + ")";
     return s;
   }
   std::string vertex_name(std::uint32_t v) const {
@@ -107,43 +190,35 @@ class Builder {
   void weld() {
     const std::size_t n = raw_.vertices.size();
     canon_.resize(n);
+    positions_.resize(n);
+    for (std::size_t i = 0; i < n; ++i) positions_[i] = raw_.vertices[i].position;
+    if (raw_.welded_by_format) {  // welded while read: every vertex is its own
+      for (std::size_t i = 0; i < n; ++i) canon_[i] = static_cast<std::uint32_t>(i);
+      return;
+    }
     std::vector<bool> used(n, false);
-    for (const RawFace& f : raw_.faces)
-      for (std::uint32_t v : f.vertices) used[v] = true;
+    for (std::uint32_t v : raw_.face_vertices) used[v] = true;
     for (const RawLine& l : raw_.lines) used[l.a] = used[l.b] = true;
-    struct KeyHash {
-      std::size_t operator()(const std::array<std::uint64_t, 3>& k) const {
-        return static_cast<std::size_t>((k[0] * 0x9E3779B97F4A7C15ull) ^ (k[1] * 0xC2B2AE3D27D4EB4Full) ^
-                                        (k[2] * 0x165667B19E3779F9ull));
-      }
-    };
-    std::unordered_map<std::array<std::uint64_t, 3>, std::uint32_t, KeyHash> first;
-    first.reserve(n);  // n vertices were read, so this is backed by data
-    positions_.reserve(n);
+    ExactPointIndex first(n);  // n vertices were read, so this is backed by data
     for (std::size_t i = 0; i < n; ++i) {
-      const Point3 p = raw_.vertices[i].position;
-      positions_.push_back(p);
-      const std::array<std::uint64_t, 3> key{std::bit_cast<std::uint64_t>(p.x + 0.0),
-                                             std::bit_cast<std::uint64_t>(p.y + 0.0),
-                                             std::bit_cast<std::uint64_t>(p.z + 0.0)};
-      const auto [it, fresh] = first.try_emplace(key, static_cast<std::uint32_t>(i));
-      canon_[i] = it->second;
-      if (!fresh && used[i] && !raw_.welded_by_format)
-        warnings_.add("merged-vertex", at(raw_.vertices[i].where,
-                                          "vertex " + vertex_name(static_cast<std::uint32_t>(i)) +
-                                              " is at the same position as vertex " +
-                                              vertex_name(it->second) + "; merged them",
-                                          "list each vertex once and reuse its index"));
+      const std::uint32_t j = first.insert(positions_[i], static_cast<std::uint32_t>(i));
+      canon_[i] = j;
+      if (j != i && used[i])
+        warnings_.add("merged-vertex",
+                      at(raw_.vertices[i].where,
+                         "vertex " + vertex_name(static_cast<std::uint32_t>(i)) +
+                             " is at the same position as vertex " + vertex_name(j) + "; merged them",
+                         "list each vertex once and reuse its index"));
     }
   }
 
   void add_face(std::size_t f) {
-    const RawFace& face = raw_.faces[f];
-    const std::string name = face_name(f);
-    std::vector<std::uint32_t> ring;
+    const Source& where = raw_.face_sources[f];
+    std::vector<std::uint32_t>& ring = ring_;
+    ring.clear();
     bool repeated = false;
     std::uint32_t repeated_vertex = 0;
-    for (std::uint32_t raw_v : face.vertices) {
+    for (std::uint32_t raw_v : raw_.face(f)) {
       const std::uint32_t v = canon_[raw_v];
       if (!ring.empty() && ring.back() == v) {
         if (!repeated) repeated_vertex = v;
@@ -157,112 +232,141 @@ class Builder {
       repeated = true;
       ring.pop_back();
     }
-    std::vector<std::uint32_t> distinct = ring;
-    std::sort(distinct.begin(), distinct.end());
-    distinct.erase(std::unique(distinct.begin(), distinct.end()), distinct.end());
-    if (distinct.size() < 3) {
-      warnings_.add(
-          "degenerate-face",
-          at(face.where,
-             name + " has only " + std::to_string(distinct.size()) +
-                 (distinct.size() == 1 ? " distinct vertex" : " distinct vertices") + "; dropped it",
-             "a face needs at least three distinct vertices"));
+    // With no vertex repeated in a row, three vertices are distinct; larger rings are counted.
+    std::size_t distinct = ring.size();
+    if (ring.size() > 3) {
+      scratch_.assign(ring.begin(), ring.end());
+      std::sort(scratch_.begin(), scratch_.end());
+      distinct = static_cast<std::size_t>(std::unique(scratch_.begin(), scratch_.end()) - scratch_.begin());
+    }
+    if (distinct < 3) {
+      warnings_.add("degenerate-face",
+                    at(where,
+                       face_name(f) + " has only " + std::to_string(distinct) +
+                           (distinct == 1 ? " distinct vertex" : " distinct vertices") + "; dropped it",
+                       "a face needs at least three distinct vertices"));
       return;
     }
 
-    // Geometry: Newell normal, size, and the worst distance from the plane through the centroid.
+    // Geometry: Newell normal and size.
     const std::vector<Point3>& pos = positions_;
-    const Vector3 normal = newell_normal(pos, Ring{ring});
+    const Vector3 normal = newell_normal(pos, std::span<const std::uint32_t>(ring));
     Point3 lo = pos[ring[0]], hi = lo;
-    Vector3 sum{};
     for (std::uint32_t v : ring) {
       lo = {std::min(lo.x, pos[v].x), std::min(lo.y, pos[v].y), std::min(lo.z, pos[v].z)};
       hi = {std::max(hi.x, pos[v].x), std::max(hi.y, pos[v].y), std::max(hi.z, pos[v].z)};
-      sum += to_vector(pos[v]);
     }
     const double size = distance(lo, hi);
     // The builder's zero-area floor is kRelative · size²; dropping up to 4× that keeps us clear of it.
     if (!(length(normal) > 4 * Tolerance::kRelative * std::max(size, Tolerance::kFloor) * size)) {
       warnings_.add("degenerate-face",
-                    at(face.where, name + " has zero area (its vertices are collinear); dropped it",
+                    at(where, face_name(f) + " has zero area (its vertices are collinear); dropped it",
                        "remove the face from the file"));
       return;
     }
     if (repeated)
-      warnings_.add("repeated-vertex", at(face.where,
-                                          name + " lists vertex " + vertex_name(repeated_vertex) +
+      warnings_.add("repeated-vertex", at(where,
+                                          face_name(f) + " lists vertex " + vertex_name(repeated_vertex) +
                                               " twice in a row; dropped the repeat",
                                           ""));
     if (is_duplicate(ring, f)) return;
 
-    const Vector3 unit = normalize(normal);
-    const Point3 centroid = to_point(sum / static_cast<double>(ring.size()));
-    double worst = 0;
-    std::uint32_t worst_vertex = ring[0];
-    for (std::uint32_t v : ring) {
-      const double d = std::abs(dot(pos[v] - centroid, unit));
-      if (d > worst) worst = d, worst_vertex = v;
-    }
-    // Half the builder's planarity tolerance, so no face we pass on can fail its check.
-    const bool simple = distinct.size() == ring.size();  // rings with bridges go to the builder as loops
-    if (simple && ring.size() > 3 && worst > 0.5 * Tolerance::kPlanarity * size) {
-      std::vector<Triangle> triangles;
-      if (!triangulate(pos, ring, normal, triangles, budget_))
-        fail_at(face.where,
-                name + " is not planar and has too many vertices (" + std::to_string(ring.size()) +
-                    ") to triangulate",
-                "split the polygon into planar faces before importing");
-      std::size_t kept = 0;
-      for (const Triangle& t : triangles) {
-        const double tsize = std::max(
-            {distance(pos[t[0]], pos[t[1]]), distance(pos[t[1]], pos[t[2]]), distance(pos[t[2]], pos[t[0]])});
-        if (!(length(cross(pos[t[1]] - pos[t[0]], pos[t[2]] - pos[t[0]])) >
-              4 * Tolerance::kRelative * tsize * tsize))
-          continue;  // a sliver between collinear vertices: no area to draw
-        push_face({t.begin(), t.end()}, f);
-        ++kept;
+    // Half the builder's planarity tolerance, so no face we pass on can fail its check. A triangle is
+    // planar; rings with bridges (a vertex twice) go to the builder as loops.
+    if (ring.size() > 3 && distinct == ring.size()) {
+      const Vector3 unit = normalize(normal);
+      Vector3 sum{};
+      for (std::uint32_t v : ring) sum += to_vector(pos[v]);
+      const Point3 centroid = to_point(sum / static_cast<double>(ring.size()));
+      double worst = 0;
+      std::uint32_t worst_vertex = ring[0];
+      for (std::uint32_t v : ring) {
+        const double d = std::abs(dot(pos[v] - centroid, unit));
+        if (d > worst) worst = d, worst_vertex = v;
       }
-      warnings_.add("non-planar", at(face.where,
-                                     name + " is not planar (vertex " + vertex_name(worst_vertex) + " lies " +
-                                         format_for_message(worst) + " off its plane); split it into " +
-                                         std::to_string(kept) + " triangles",
-                                     "the split lines are drawn unless a crease angle hides them; model the "
-                                     "polygon as planar faces to avoid them"));
-      return;
+      if (worst > 0.5 * Tolerance::kPlanarity * size) {
+        split_non_planar(f, normal, worst, worst_vertex);
+        return;
+      }
     }
-    push_face(std::move(ring), f);
+    push_face(ring, f);
   }
 
-  // A face with the same cycle of vertices as an earlier one (either direction) is dropped. Faces are
-  // compared by two independent 64-bit hashes of that cycle: a false match among 10^7 faces has odds
-  // near 10^-25, and no face has to be stored twice.
+  void split_non_planar(std::size_t f, Vector3 normal, double worst, std::uint32_t worst_vertex) {
+    const std::vector<Point3>& pos = positions_;
+    const Source& where = raw_.face_sources[f];
+    std::vector<Triangle> triangles;
+    if (!triangulate(pos, ring_, normal, triangles, budget_))
+      fail_at(where,
+              face_name(f) + " is not planar and has too many vertices (" + std::to_string(ring_.size()) +
+                  ") to triangulate",
+              "split the polygon into planar faces before importing");
+    std::size_t kept = 0;
+    for (const Triangle& t : triangles) {
+      const double tsize = std::max(
+          {distance(pos[t[0]], pos[t[1]]), distance(pos[t[1]], pos[t[2]]), distance(pos[t[2]], pos[t[0]])});
+      if (!(length(cross(pos[t[1]] - pos[t[0]], pos[t[2]] - pos[t[0]])) >
+            4 * Tolerance::kRelative * tsize * tsize))
+        continue;  // a sliver between collinear vertices: no area to draw
+      push_face(t, f);
+      ++kept;
+    }
+    warnings_.add("non-planar",
+                  at(where,
+                     face_name(f) + " is not planar (vertex " + vertex_name(worst_vertex) + " lies " +
+                         format_for_message(worst) + " off its plane); split it into " +
+                         std::to_string(kept) + " triangles",
+                     "the split lines are drawn unless a crease angle hides them; model the polygon as "
+                     "planar faces to avoid them"));
+  }
+
+  // A face with the same cycle of vertices as an earlier one (either direction) is dropped.
   bool is_duplicate(const std::vector<std::uint32_t>& ring, std::size_t f) {
-    std::vector<std::uint32_t> r = ring;
-    std::rotate(r.begin(), std::min_element(r.begin(), r.end()), r.end());
-    std::vector<std::uint32_t> back(r.rbegin(), r.rend());
-    std::rotate(back.begin(), std::min_element(back.begin(), back.end()), back.end());
-    const std::vector<std::uint32_t>& key = std::min(r, back);
-    FaceKey h{key.size(), ~std::uint64_t{key.size()}};
-    for (std::uint32_t v : key) {
+    // The canonical cycle: from its smallest vertex, in the direction that reads smaller.
+    const std::size_t n = ring.size();
+    const std::size_t m = static_cast<std::size_t>(std::min_element(ring.begin(), ring.end()) - ring.begin());
+    auto step = [n](std::size_t i, bool forward) {
+      return forward ? (i + 1 == n ? 0 : i + 1) : (i == 0 ? n - 1 : i - 1);
+    };
+    bool forward = true;
+    for (std::size_t k = 1, i = step(m, true), j = step(m, false); k < n;
+         ++k, i = step(i, true), j = step(j, false))
+      if (ring[i] != ring[j]) {
+        forward = ring[i] < ring[j];
+        break;
+      }
+    FaceKeyHashes h{n, ~std::uint64_t{n}};
+    for (std::size_t k = 0, i = m; k < n; ++k, i = step(i, forward)) {
+      const std::uint32_t v = ring[i];
       h.a = (h.a ^ v) * 0x100000001B3ull;                               // FNV-1a style
       h.b = (h.b + v + 0x9E3779B97F4A7C15ull) * 0xBF58476D1CE4E5B9ull;  // splitmix style
       h.b ^= h.b >> 31;
     }
-    const auto [it, fresh] = seen_.try_emplace(h, f);
-    if (fresh) return false;
+    // Spread the FNV hash's low bits, which pick the slot.
+    const std::uint64_t slot_key = (h.a ^ (h.a >> 29)) * 0x94D049BB133111EBull;
+    const std::size_t earlier = seen_.insert(slot_key ^ (slot_key >> 32), h.b, f);
+    if (earlier == f) return false;
     warnings_.add("duplicate-face",
-                  at(raw_.faces[f].where, face_name(f) + " repeats " + face_name(it->second) + "; dropped it",
+                  at(raw_.face_sources[f], face_name(f) + " repeats " + face_name(earlier) + "; dropped it",
                      "remove the duplicate from the file"));
     return true;
   }
 
-  void push_face(std::vector<std::uint32_t> ring, std::size_t f) {
-    if (faces_.size() >= options_.max_faces)
-      fail_at(raw_.faces[f].where,
+  template <typename Ring>
+  void push_face(const Ring& ring, std::size_t f) {
+    if (out_ends_.size() >= options_.max_faces)
+      fail_at(raw_.face_sources[f],
               "the mesh has more than " + std::to_string(options_.max_faces) +
                   " faces after splitting non-planar ones",
               "raise the face limit or simplify the mesh");
-    faces_.push_back({std::move(ring), f});
+    out_vertices_.insert(out_vertices_.end(), ring.begin(), ring.end());
+    out_ends_.push_back(out_vertices_.size());
+    out_raw_.push_back(f);
+  }
+
+  std::span<const std::uint32_t> built_face(std::size_t k) const {
+    const std::size_t begin = k == 0 ? 0 : out_ends_[k - 1];
+    return {out_vertices_.data() + begin, out_ends_[k] - begin};
   }
 
   void add_line(std::size_t l) {
@@ -285,7 +389,7 @@ class Builder {
     auto number = [&]() {  // maps the number at i, advancing past it
       std::size_t k = i, n = 0;
       while (digit(k) && k - i < 18) n = n * 10 + static_cast<std::size_t>(message[k++] - '0');
-      out += n >= 1 && n <= faces_.size() ? std::to_string(faces_[n - 1].raw + 1) : message.substr(i, k - i);
+      out += n >= 1 && n <= out_raw_.size() ? std::to_string(out_raw_[n - 1] + 1) : message.substr(i, k - i);
       i = k;
     };
     while (i < message.size()) {
@@ -327,9 +431,9 @@ class Builder {
     Source where{static_cast<int>(raw_.files.size()) - 1, 0, 0, -1};
     if (d.tag >= 0 && kind == TagKind::Vertex && index < raw_.vertices.size()) {
       where = raw_.vertices[index].where;
-    } else if (d.tag >= 0 && kind == TagKind::Face && index < faces_.size()) {
-      const std::size_t f = faces_[index].raw;
-      where = raw_.faces[f].where;
+    } else if (d.tag >= 0 && kind == TagKind::Face && index < out_raw_.size()) {
+      const std::size_t f = out_raw_[index];
+      where = raw_.face_sources[f];
       if (where.offset >= 0)
         message += " (" + std::string(raw_.face_noun) + " " + std::to_string(f + 1) +
                    " starts at byte offset " + std::to_string(where.offset) + ")";
@@ -356,22 +460,26 @@ class Builder {
     build_options.fix_winding = true;
     SolidBuilder builder(build_options);
 
-    // Only vertices some face or line uses; ids are the file's vertex numbers.
-    std::vector<bool> used(raw_.vertices.size(), false);
-    for (const BuiltFace& f : faces_)
-      for (std::uint32_t v : f.ring) used[v] = true;
+    // Only vertices some face or line uses, numbered in messages as in the file.
+    const std::size_t n = raw_.vertices.size();
+    std::vector<bool> used(n, false);
+    for (std::uint32_t v : out_vertices_) used[v] = true;
     for (const BuiltLine& l : lines_) used[l.a] = used[l.b] = true;
     std::size_t unused = 0, first_unused = 0;
-    std::vector<std::string> names(raw_.vertices.size());  // made once, not per reference
-    for (std::size_t v = 0; v < raw_.vertices.size(); ++v) {
+    std::vector<VertexIndex> index_of(n, 0);  // raw vertex → builder vertex
+    std::vector<std::uint32_t> raw_of;        // builder vertex → raw vertex
+    raw_of.reserve(n);
+    builder.reserve(n, out_ends_.size(), out_vertices_.size());
+    for (std::size_t v = 0; v < n; ++v) {
       if (canon_[v] != v) continue;
       if (used[v]) {
-        names[v] = vertex_name(static_cast<std::uint32_t>(v));
-        builder.add_vertex(names[v], raw_.vertices[v].position, make_tag(TagKind::Vertex, v));
+        index_of[v] = builder.add_vertex(raw_.vertices[v].position, make_tag(TagKind::Vertex, v));
+        raw_of.push_back(static_cast<std::uint32_t>(v));
       } else if (unused++ == 0) {
         first_unused = v;
       }
     }
+    builder.label_indexed_vertices([&](VertexIndex i) { return vertex_name(raw_of[i]); });
     if (unused > 0)
       warnings_.add(
           "unused-vertex",
@@ -379,16 +487,11 @@ class Builder {
              "vertex " + vertex_name(static_cast<std::uint32_t>(first_unused)) +
                  (unused > 1 ? " and " + std::to_string(unused - 1) + " other vertices are" : " is") +
                  " used by no face or line; left out"));
-    auto ids = [&](const std::vector<std::uint32_t>& ring) {
-      std::vector<std::string> out;
-      out.reserve(ring.size());
-      for (std::uint32_t v : ring) out.push_back(names[v]);
-      return out;
-    };
-    for (std::size_t i = 0; i < faces_.size(); ++i)
-      builder.add_face(ids(faces_[i].ring), {}, make_tag(TagKind::Face, i));
+    for (std::uint32_t& v : out_vertices_) v = index_of[v];
+    for (std::size_t i = 0; i < out_ends_.size(); ++i)
+      builder.add_indexed_polygon(built_face(i), make_tag(TagKind::Face, i));
     for (std::size_t i = 0; i < lines_.size(); ++i)
-      builder.add_line(names[lines_[i].a], names[lines_[i].b], make_tag(TagKind::Line, i));
+      builder.add_indexed_line(index_of[lines_[i].a], index_of[lines_[i].b], make_tag(TagKind::Line, i));
 
     SolidBuildResult result = builder.build();
     std::size_t errors = 0, inside_out = 0;
@@ -429,16 +532,16 @@ class Builder {
   Warnings warnings_;
   std::vector<std::uint32_t> canon_;
   std::vector<Point3> positions_;
-  std::vector<BuiltFace> faces_;
+  // The faces passed on, back to back (raw vertex indices, canonical), with the file face of each.
+  std::vector<std::uint32_t> out_vertices_;
+  std::vector<std::size_t> out_ends_;
+  std::vector<std::size_t> out_raw_;
   std::vector<BuiltLine> lines_;
-  struct FaceKey {
+  struct FaceKeyHashes {
     std::uint64_t a, b;
-    bool operator==(const FaceKey&) const = default;
   };
-  struct FaceKeyHash {
-    std::size_t operator()(const FaceKey& k) const { return static_cast<std::size_t>(k.a ^ (k.b << 1)); }
-  };
-  std::unordered_map<FaceKey, std::size_t, FaceKeyHash> seen_;  // cycle of a kept face → its file face
+  FaceCycleSet seen_;                          // cycle of a kept face → its file face
+  std::vector<std::uint32_t> ring_, scratch_;  // one face's ring, reused
   std::int64_t budget_ = kTriangulationBudget;
 };
 

@@ -5,6 +5,7 @@
 
 #include <array>
 #include <cstdint>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -18,6 +19,7 @@ namespace hlr::stdlib::mesh_detail {
 
 // Where a record came from: a line and column of a text file, or a byte offset of a binary one.
 struct Source {
+  bool operator==(const Source&) const = default;
   int file = 0;  // index into RawMesh::files
   int line = 0;
   int column = 0;
@@ -27,16 +29,13 @@ struct Source {
 struct RawVertex {
   Point3 position;
   Source where;
-};
-
-struct RawFace {
-  std::vector<std::uint32_t> vertices;  // indices into RawMesh::vertices, checked by the parser
-  Source where;
+  bool operator==(const RawVertex&) const = default;
 };
 
 struct RawLine {
   std::uint32_t a = 0, b = 0;
   Source where;
+  bool operator==(const RawLine&) const = default;
 };
 
 struct RawMesh {
@@ -45,9 +44,44 @@ struct RawMesh {
   int vertex_base = 0;             // the number of the first vertex in messages (OFF 0, others 1)
   bool welded_by_format = false;   // STL: exact welding is how its vertices are found, not a repair
   std::vector<RawVertex> vertices;
-  std::vector<RawFace> faces;  // face k is "<noun> k+1" in messages
+  // Faces back to back (one allocation for all, not one per face): face k ("<noun> k+1" in messages)
+  // lists face_vertices[face_ends[k-1] .. face_ends[k]), indices into `vertices` checked by the parser.
+  std::vector<std::uint32_t> face_vertices;
+  std::vector<std::size_t> face_ends;
+  std::vector<Source> face_sources;
   std::vector<RawLine> lines;
   std::vector<MeshProblem> warnings;  // found while parsing
+
+  std::size_t face_count() const { return face_ends.size(); }
+  std::span<const std::uint32_t> face(std::size_t k) const {
+    const std::size_t begin = k == 0 ? 0 : face_ends[k - 1];
+    return {face_vertices.data() + begin, face_ends[k] - begin};
+  }
+  // Ends the face whose vertices were appended to face_vertices since the last one.
+  void end_face(const Source& where) {
+    face_ends.push_back(face_vertices.size());
+    face_sources.push_back(where);
+  }
+  bool operator==(const RawMesh&) const = default;  // for tests comparing two readers
+};
+
+// Points by their exact coordinates, -0 and +0 being equal (welding): open addressing with the key in
+// the slot, so a lookup touches one cache line, not a node per point as std::unordered_map would.
+class ExactPointIndex {
+ public:
+  explicit ExactPointIndex(std::size_t expected = 0);
+  // The index stored for p, or `index` (now stored for p) when p is new.
+  std::uint32_t insert(Point3 p, std::uint32_t index);
+
+ private:
+  struct Slot {
+    std::uint64_t key[3];
+    std::uint32_t index;  // kEmpty: free
+  };
+  static constexpr std::uint32_t kEmpty = 0xffffffffu;
+  void grow();
+  std::vector<Slot> slots_;  // a power of two, at most half full
+  std::size_t size_ = 0;
 };
 
 // Repairs the raw mesh (welding, repeated vertices, degenerate faces, non-planar polygons), builds the

@@ -56,6 +56,7 @@ struct MeshProblem {
   int column = 0;  // 1-based byte column; 0 = unknown
   std::string message;
   std::string hint;  // what to do about it (may be empty)
+  bool operator==(const MeshProblem&) const = default;
   // "file:line:column: message; hint: hint" (parts that are 0 or empty are left out).
   std::string to_string() const;
 };

@@ -114,13 +114,11 @@ ImportedMesh import_obj(std::string_view text, const std::string& name, const Me
       if (raw.vertices.size() >= 0xFFFFFFFFu) ctx.fail(t[0].column, "too many vertices", "split the mesh");
       raw.vertices.push_back({p, {0, ctx.line(), t[0].column, -1}});
     } else if (keyword == "f" || keyword == "fo") {
-      if (raw.faces.size() >= options.max_faces)
+      if (raw.face_count() >= options.max_faces)
         ctx.fail(t[0].column, "the file has more than " + std::to_string(options.max_faces) + " faces",
                  "raise the face limit or simplify the mesh");
-      RawFace f;
-      f.where = {0, ctx.line(), t[0].column, -1};
-      for (std::size_t i = 1; i < t.size(); ++i) f.vertices.push_back(reader.reference(t[i], ctx));
-      raw.faces.push_back(std::move(f));  // fewer than 3 vertices: dropped with a warning when built
+      for (std::size_t i = 1; i < t.size(); ++i) raw.face_vertices.push_back(reader.reference(t[i], ctx));
+      raw.end_face({0, ctx.line(), t[0].column, -1});  // fewer than 3 vertices: dropped with a warning when built
     } else if (keyword == "l") {
       std::vector<std::uint32_t> chain;
       for (std::size_t i = 1; i < t.size(); ++i) chain.push_back(reader.reference(t[i], ctx));

@@ -142,8 +142,6 @@ ImportedMesh import_off(std::string_view text, const std::string& name, const Me
                face + " has " + std::to_string(listed - n) + " values after its " + std::to_string(n) +
                    " vertex indices; at most a colour (4 values) may follow",
                "check the vertex count at the start of the line");
-    RawFace f;
-    f.where = {0, ctx.line(), (*t)[0].column, -1};
     for (std::int64_t i = 1; i <= n; ++i) {
       const Token& tok = (*t)[static_cast<std::size_t>(i)];
       const std::int64_t v =
@@ -151,11 +149,11 @@ ImportedMesh import_off(std::string_view text, const std::string& name, const Me
       if (v < 0 || v >= n_vertices)
         ctx.fail(tok.column, "vertex index " + std::to_string(v) + " is out of range (" + range + ")",
                  "OFF vertex indices count from 0");
-      f.vertices.push_back(static_cast<std::uint32_t>(v));
+      raw.face_vertices.push_back(static_cast<std::uint32_t>(v));
     }
     for (std::size_t i = static_cast<std::size_t>(n) + 1; i < t->size(); ++i)
       ctx.any_real((*t)[i], "the face colour");
-    raw.faces.push_back(std::move(f));
+    raw.end_face({0, ctx.line(), (*t)[0].column, -1});
   }
 
   if ((t = in.next()))

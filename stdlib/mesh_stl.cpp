@@ -64,12 +64,12 @@ ImportedMesh read_binary(std::string_view bytes, const std::string& name, const 
              std::to_string(options.max_faces),
          "raise the face limit or simplify the mesh");
   // The caller checked that the size is exactly 84 + 50·count, so this reserve is backed by data.
-  raw.faces.reserve(count);
+  raw.face_vertices.reserve(3 * count);
+  raw.face_ends.reserve(count);
+  raw.face_sources.reserve(count);
   Welder welder(raw);
   for (std::uint64_t k = 0; k < count; ++k) {
     const std::uint64_t offset = 84 + 50 * k;
-    RawFace f;
-    f.where = {0, 0, 0, static_cast<std::int64_t>(offset)};
     for (int c = 0; c < 3; ++c) {
       const unsigned char* p = data + offset + 12 + 12 * static_cast<std::uint64_t>(c);
       const Point3 v{read_f32(p), read_f32(p + 4), read_f32(p + 8)};
@@ -79,9 +79,9 @@ ImportedMesh read_binary(std::string_view bytes, const std::string& name, const 
                  ") has a non-finite " + "coordinate in corner " + std::to_string(c + 1) + " (byte offset " +
                  std::to_string(offset + 12 + 12 * static_cast<std::uint64_t>(c)) + ")",
              "every coordinate must be a finite number; repair the mesh and export it again");
-      f.vertices.push_back(welder.add(v, {0, 0, 0, static_cast<std::int64_t>(offset)}));
+      raw.face_vertices.push_back(welder.add(v, {0, 0, 0, static_cast<std::int64_t>(offset)}));
     }
-    raw.faces.push_back(std::move(f));
+    raw.end_face({0, 0, 0, static_cast<std::int64_t>(offset)});
   }
   return build_mesh(std::move(raw), options);
 }
@@ -152,26 +152,25 @@ ImportedMesh read_ascii(std::string_view text, const std::string& name, const Me
       }
       if (!iequals(t.text, "facet"))
         in.context().fail(t.column, "expected 'facet' or 'endsolid', found " + quoted(t.text), kAsciiHint);
-      if (raw.faces.size() >= options.max_faces)
+      if (raw.face_count() >= options.max_faces)
         in.context().fail(t.column, "the file has more than " + std::to_string(options.max_faces) + " facets",
                           "raise the face limit or simplify the mesh");
-      RawFace f;
-      f.where = {0, in.context().line(), t.column, -1};
+      const Source where{0, in.context().line(), t.column, -1};
       Token word = in.next();
       if (iequals(word.text, "normal")) {
         for (const char* what : {"the normal's x", "the normal's y", "the normal's z"}) {
           const Token n = in.next();
           if (n.column == 0)
-            fail(name, f.where.line, 0, "the file ends inside a facet", "the file is truncated");
+            fail(name, where.line, 0, "the file ends inside a facet", "the file is truncated");
           in.context().any_real(n, what);  // ignored: even "nan" normals are common
         }
         word = in.next();
       }
       if (word.column == 0)
-        fail(name, f.where.line, 0, "the file ends inside a facet", "the file is truncated");
+        fail(name, where.line, 0, "the file ends inside a facet", "the file is truncated");
       if (!iequals(word.text, "outer"))
         in.context().fail(word.column,
-                          "expected 'outer loop' in facet " + std::to_string(raw.faces.size() + 1) +
+                          "expected 'outer loop' in facet " + std::to_string(raw.face_count() + 1) +
                               ", found " + quoted(word.text),
                           kAsciiHint);
       in.expect("loop", "after 'outer'");
@@ -191,10 +190,10 @@ ImportedMesh read_ascii(std::string_view text, const std::string& name, const Me
           if (n.column == 0) fail(name, line, 0, "the file ends inside a vertex", "the file is truncated");
           xyz[c] = in.context().real(n, names[c]);
         }
-        f.vertices.push_back(welder.add({xyz[0], xyz[1], xyz[2]}, {0, line, v.column, -1}));
+        raw.face_vertices.push_back(welder.add({xyz[0], xyz[1], xyz[2]}, {0, line, v.column, -1}));
       }
       in.expect("endfacet", "after 'endloop'");
-      raw.faces.push_back(std::move(f));  // fewer than three vertices: dropped with a warning when built
+      raw.end_face(where);  // fewer than three vertices: dropped with a warning when built
     }
   } catch (MeshImportError& e) {
     if (could_be_binary) {

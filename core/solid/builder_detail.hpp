@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <span>
 #include <string>
 #include <utility>
@@ -62,6 +63,7 @@ struct VertexTable {
   std::vector<VertexIndex> by_id;     // interned id → index, kNoVertex if no vertex has it
   const std::vector<std::uint32_t>* input_ids = nullptr;  // SolidBuilder::vertex_ids_
   const IdTable* ids = nullptr;
+  const std::function<std::string(VertexIndex)>* label = nullptr;  // names indexed vertices, if set
 
   VertexIndex resolve(VertexRef ref) const;   // kNoVertex if no vertex has that id
   std::string ref_text(VertexRef ref) const;  // the id a reference names
@@ -72,7 +74,7 @@ struct VertexTable {
 // errors. `input_ids` and `ids` as in SolidBuilder.
 VertexTable resolve_vertices(const std::vector<Point3>& positions, Tags tags,
                              const std::vector<std::uint32_t>& input_ids, const IdTable& ids,
-                             Diagnostics& diagnostics);
+                             const std::function<std::string(VertexIndex)>* label, Diagnostics& diagnostics);
 
 // Closed loops of vertex indices stored back to back.
 struct Loops {

@@ -10,18 +10,19 @@
 
 namespace hlr {
 
-Vector3 newell_normal(const std::vector<Point3>& vertices, const Ring& ring) {
-  const std::vector<VertexIndex>& r = ring.vertices;
+Vector3 newell_normal(const std::vector<Point3>& vertices, std::span<const VertexIndex> r) {
   if (r.size() < 3) return {};
   // Newell's sums over coordinates relative to the first vertex: the same vector, without the
   // cancellation that large absolute coordinates would cause.
   const Point3 o = vertices[r[0]];
   Vector3 n{};
+  Vector3 a{};  // vertex i − o; the first is zero
   for (std::size_t i = 0; i < r.size(); ++i) {
-    const Vector3 a = vertices[r[i]] - o, b = vertices[r[(i + 1) % r.size()]] - o;
+    const Vector3 b = i + 1 < r.size() ? vertices[r[i + 1]] - o : Vector3{};
     n.x += (a.y - b.y) * (a.z + b.z);
     n.y += (a.z - b.z) * (a.x + b.x);
     n.z += (a.x - b.x) * (a.y + b.y);
+    a = b;
   }
   return n;
 }

@@ -5,6 +5,7 @@
 
 #include <atomic>
 #include <cstdint>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -109,6 +110,9 @@ struct Solid {
 void link_ring_edges(Solid& solid);
 
 // Newell's normal of a ring (length = twice the area; direction by the right-hand rule).
-Vector3 newell_normal(const std::vector<Point3>& vertices, const Ring& ring);
+Vector3 newell_normal(const std::vector<Point3>& vertices, std::span<const VertexIndex> ring);
+inline Vector3 newell_normal(const std::vector<Point3>& vertices, const Ring& ring) {
+  return newell_normal(vertices, std::span<const VertexIndex>(ring.vertices));
+}
 
 }  // namespace hlr

@@ -106,6 +106,12 @@ void SolidBuilder::add_indexed_face(std::span<const std::vector<VertexIndex>> ri
   end_face(tag, false);
 }
 
+void SolidBuilder::add_indexed_polygon(std::span<const VertexIndex> ring, std::int64_t tag) {
+  for (VertexIndex v : ring) refs_.push_back(index_ref(v));
+  end_ring();
+  end_face(tag, false);
+}
+
 void SolidBuilder::add_indexed_line(VertexIndex a, VertexIndex b, std::int64_t tag) {
   const VertexRef ra = index_ref(a);
   lines_.push_back({ra, index_ref(b), tag});
@@ -126,7 +132,8 @@ SolidBuildResult SolidBuilder::build() const {
   Diagnostics diagnostics(result.diagnostics);
   const SolidBuildOptions options = sanitized(options_);
 
-  VertexTable vertices = resolve_vertices(positions_, Tags{vertex_tags_}, vertex_ids_, ids_, diagnostics);
+  VertexTable vertices =
+      resolve_vertices(positions_, Tags{vertex_tags_}, vertex_ids_, ids_, label_ ? &label_ : nullptr, diagnostics);
 
   // Faces one at a time: resolve the references, prepare, enter the edges; the rings go straight into
   // the solid. Faces keep their input positions (invalid ones stay empty; they always come with an error).

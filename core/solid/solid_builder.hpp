@@ -11,6 +11,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <span>
 #include <string>
@@ -77,7 +78,12 @@ class SolidBuilder {
   VertexIndex add_vertex(Point3 position, std::int64_t tag = -1);
   // rings[0] is the outer loop, the others holes, as in add_face.
   void add_indexed_face(std::span<const std::vector<VertexIndex>> rings, std::int64_t tag = -1);
+  // A face of one ring (no holes), the common case of mesh files: no vector per face.
+  void add_indexed_polygon(std::span<const VertexIndex> ring, std::int64_t tag = -1);
   void add_indexed_line(VertexIndex a, VertexIndex b, std::int64_t tag = -1);
+  // How messages name indexed vertices (a mesh file's own vertex numbers, say); by default their number.
+  // Only the wording changes: ids given as text still match an indexed vertex by its number.
+  void label_indexed_vertices(std::function<std::string(VertexIndex)> label) { label_ = std::move(label); }
   // Optional: room for this many more vertices, faces and vertex references in all rings.
   void reserve(std::size_t vertices, std::size_t faces, std::size_t references);
 
@@ -104,6 +110,7 @@ class SolidBuilder {
   std::vector<std::int64_t> face_tags_;
   std::vector<bool> face_is_loop_;  // from add_face_loop: split into rings and on-face lines by build()
   std::vector<solid_detail::LineSpec> lines_;
+  std::function<std::string(VertexIndex)> label_;  // empty: the number in decimal
 };
 
 }  // namespace hlr

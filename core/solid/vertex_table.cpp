@@ -67,12 +67,15 @@ VertexIndex VertexTable::resolve(VertexRef ref) const {
 }
 
 std::string VertexTable::ref_text(VertexRef ref) const {
-  return ref & kIndexRef ? std::to_string(ref & ~kIndexRef) : std::string(ids->text(ref));
+  if (!(ref & kIndexRef)) return std::string(ids->text(ref));
+  const VertexIndex input = ref & ~kIndexRef;
+  return label && input < input_count ? (*label)(input) : std::to_string(input);
 }
 
 std::string VertexTable::id(VertexIndex v) const {
   const VertexIndex input = input_of.empty() ? v : input_of[v];
-  return indexed(*input_ids, input) ? std::to_string(input) : std::string(ids->text((*input_ids)[input]));
+  if (!indexed(*input_ids, input)) return std::string(ids->text((*input_ids)[input]));
+  return label ? (*label)(input) : std::to_string(input);
 }
 
 // ---- the vertex stage ------------------------------------------------------------------------------------
@@ -180,8 +183,9 @@ std::vector<VertexIndex> earlier_twins(const VertexTable& table) {
 
 VertexTable resolve_vertices(const std::vector<Point3>& positions, Tags tags,
                              const std::vector<std::uint32_t>& input_ids, const IdTable& ids,
-                             Diagnostics& diagnostics) {
+                             const std::function<std::string(VertexIndex)>* label, Diagnostics& diagnostics) {
   VertexTable table;
+  table.label = label;
   table.input_ids = &input_ids;
   table.ids = &ids;
   const std::size_t n = positions.size();
