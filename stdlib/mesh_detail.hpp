@@ -84,6 +84,20 @@ class ExactPointIndex {
   std::size_t size_ = 0;
 };
 
+// The readers of each text format: fast where they can (false: declined), careful otherwise (throws
+// MeshImportError at the first problem). Both give the same RawMesh for every file the fast one takes.
+bool read_off_fast(std::string_view text, const std::string& name, const MeshImportOptions& options,
+                   RawMesh& raw);
+RawMesh read_off_careful(std::string_view text, const std::string& name, const MeshImportOptions& options);
+bool read_obj_fast(std::string_view text, const std::string& name, const MeshImportOptions& options,
+                   RawMesh& raw);
+RawMesh read_obj_careful(std::string_view text, const std::string& name, const MeshImportOptions& options);
+bool read_stl_ascii_fast(std::string_view text, const std::string& name, const MeshImportOptions& options,
+                         RawMesh& raw);
+// `could_be_binary`: the size allows a binary STL, so problems add that it may be a damaged one.
+RawMesh read_stl_ascii_careful(std::string_view text, const std::string& name,
+                               const MeshImportOptions& options, bool could_be_binary);
+
 // Repairs the raw mesh (welding, repeated vertices, degenerate faces, non-planar polygons), builds the
 // Solid through SolidBuilder and turns its diagnostics into warnings or a MeshImportError.
 ImportedMesh build_mesh(RawMesh raw, const MeshImportOptions& options);
@@ -117,6 +131,34 @@ class LineScanner {
   std::string_view rest_, current_;
   int line_ = 0;
   std::vector<Token> tokens_;
+};
+
+// The fast reader of the common case (mesh_fast_text.cpp): records of plain decimal numbers separated
+// by blanks, one record per line. It never reports a problem: where the text is anything else (a
+// malformed or unusual token, a line it cannot place) it declines, and the format's careful reader —
+// LineScanner and LineContext — reads the whole file again and says what is wrong. Lines and columns
+// are counted as LineScanner counts them.
+class FastCursor {
+ public:
+  explicit FastCursor(std::string_view text, char comment = 0);
+  // Moves to the first token of the next line holding data, skipping blank lines and comments; false at
+  // the end of the text. Call it at the start of the text or at the end of a record's line.
+  bool next_record();
+  bool real(double& out);            // a finite real, as parse_real reads it without a leading '+'
+  bool index(std::uint64_t& out);    // decimal digits only (at most 18)
+  bool word(std::string_view& out);  // any token
+  bool end_of_line();                // only blanks or a comment left: moves past the line end
+  void skip_line();                  // to the start of the next line
+  bool at_line_end() const;          // nothing but blanks or a comment before the line end
+  int line() const { return line_; }
+  int column() const;  // of the next token
+
+ private:
+  bool boundary(const char* q) const;  // a token may end at q
+  void skip_blanks();
+  const char *p_, *end_, *line_start_;
+  int line_ = 1;
+  char comment_;
 };
 
 // Parsing of numbers in one line of one file, reporting problems at the token.

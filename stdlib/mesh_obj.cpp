@@ -92,7 +92,77 @@ class ObjReader {
 
 }  // namespace
 
-ImportedMesh import_obj(std::string_view text, const std::string& name, const MeshImportOptions& options) {
+namespace mesh_detail {
+
+namespace {
+
+// Statements with nothing to draw, skipped by both readers.
+bool ignored(std::string_view keyword) {
+  return one_of(keyword, {"vt", "vn", "vp", "o", "g", "s", "usemtl", "mtllib", "maplib", "usemap", "lod",
+                          "shadow_obj", "trace_obj", "bevel", "c_interp", "d_interp", "p"});
+}
+
+// "-?digits" at the start of s, advancing past it; false (s unchanged) if there are none.
+bool leading_integer(std::string_view& s, std::int64_t& out) {
+  std::size_t i = s.starts_with('-') ? 1 : 0;
+  std::int64_t v = 0;
+  const std::size_t first = i;
+  while (i < s.size() && s[i] >= '0' && s[i] <= '9' && i - first < 18) v = 10 * v + (s[i++] - '0');
+  if (i == first || (i < s.size() && s[i] >= '0' && s[i] <= '9')) return false;
+  out = s[0] == '-' ? -v : v;
+  s.remove_prefix(i);
+  return true;
+}
+
+}  // namespace
+
+bool read_obj_fast(std::string_view text, const std::string& name, const MeshImportOptions& options,
+                   RawMesh& raw) {
+  if (text.empty()) return false;
+  raw = RawMesh{};
+  raw.files = {name};
+  raw.vertex_base = 1;
+  FastCursor in(text, '#');
+  std::int64_t furthest = 0;  // the largest positive index, checked once every vertex is read
+  std::string_view keyword, ref;
+  while (in.next_record()) {
+    const Source where{0, in.line(), in.column(), -1};
+    if (!in.word(keyword)) return false;
+    if (keyword == "v") {
+      Point3 p;
+      if (!in.real(p.x) || !in.real(p.y) || !in.real(p.z) || raw.vertices.size() >= 0xFFFFFFFFu) return false;
+      in.skip_line();  // extras (w, colour) ignored
+      raw.vertices.push_back({p, where});
+    } else if (keyword == "f" || keyword == "fo") {
+      if (raw.face_count() >= options.max_faces) return false;
+      const auto defined = static_cast<std::int64_t>(raw.vertices.size());
+      while (!in.end_of_line()) {
+        // v, v/vt, v//vn or v/vt/vn.
+        std::int64_t i = 0, ignored_part = 0;
+        if (!in.word(ref) || !leading_integer(ref, i)) return false;
+        if (ref.starts_with('/')) {
+          ref.remove_prefix(1);
+          if (!ref.starts_with('/') && !leading_integer(ref, ignored_part)) return false;
+          if (ref.starts_with('/')) {
+            ref.remove_prefix(1);
+            if (!leading_integer(ref, ignored_part)) return false;
+          }
+        }
+        if (!ref.empty() || i == 0 || -i > defined || i > 0xFFFFFFFFll) return false;
+        furthest = std::max(furthest, i);
+        raw.face_vertices.push_back(static_cast<std::uint32_t>(i < 0 ? defined + i : i - 1));
+      }
+      raw.end_face(where);
+    } else if (ignored(keyword)) {
+      in.skip_line();
+    } else {
+      return false;  // lines, free-form geometry, unknown statements: the careful reader's warnings
+    }
+  }
+  return furthest <= static_cast<std::int64_t>(raw.vertices.size());
+}
+
+RawMesh read_obj_careful(std::string_view text, const std::string& name, const MeshImportOptions& options) {
   RawMesh raw;
   raw.files = {name};
   raw.vertex_base = 1;
@@ -118,7 +188,8 @@ ImportedMesh import_obj(std::string_view text, const std::string& name, const Me
         ctx.fail(t[0].column, "the file has more than " + std::to_string(options.max_faces) + " faces",
                  "raise the face limit or simplify the mesh");
       for (std::size_t i = 1; i < t.size(); ++i) raw.face_vertices.push_back(reader.reference(t[i], ctx));
-      raw.end_face({0, ctx.line(), t[0].column, -1});  // fewer than 3 vertices: dropped with a warning when built
+      raw.end_face(
+          {0, ctx.line(), t[0].column, -1});  // fewer than 3 vertices: dropped with a warning when built
     } else if (keyword == "l") {
       std::vector<std::uint32_t> chain;
       for (std::size_t i = 1; i < t.size(); ++i) chain.push_back(reader.reference(t[i], ctx));
@@ -127,8 +198,7 @@ ImportedMesh import_obj(std::string_view text, const std::string& name, const Me
             {name, ctx.line(), t[0].column, "a line needs at least two vertices; skipped it", ""});
       for (std::size_t i = 0; i + 1 < chain.size(); ++i)
         raw.lines.push_back({chain[i], chain[i + 1], {0, ctx.line(), t[i + 1].column, -1}});
-    } else if (one_of(keyword, {"vt", "vn", "vp", "o", "g", "s", "usemtl", "mtllib", "maplib", "usemap",
-                                "lod", "shadow_obj", "trace_obj", "bevel", "c_interp", "d_interp", "p"})) {
+    } else if (ignored(keyword)) {
       continue;  // texture, normals, grouping, materials, points: nothing to draw
     } else if (one_of(keyword, {"cstype", "deg", "bmat", "step", "curv", "curv2", "surf", "parm", "trim",
                                 "hole", "scrv", "sp", "end", "con"})) {
@@ -141,6 +211,14 @@ ImportedMesh import_obj(std::string_view text, const std::string& name, const Me
     }
   }
   reader.check_forward_references();
+  return raw;
+}
+
+}  // namespace mesh_detail
+
+ImportedMesh import_obj(std::string_view text, const std::string& name, const MeshImportOptions& options) {
+  RawMesh raw;
+  if (!read_obj_fast(text, name, options, raw)) raw = read_obj_careful(text, name, options);
   return build_mesh(std::move(raw), options);
 }
 

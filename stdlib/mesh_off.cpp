@@ -56,7 +56,47 @@ std::size_t read_keyword(const std::vector<Token>& t, const LineContext& ctx) {
 
 }  // namespace
 
-ImportedMesh import_off(std::string_view text, const std::string& name, const MeshImportOptions& options) {
+namespace mesh_detail {
+
+bool read_off_fast(std::string_view text, const std::string& name, const MeshImportOptions& options,
+                   RawMesh& raw) {
+  FastCursor in(text, '#');
+  std::string_view keyword;
+  if (!in.next_record() || !in.word(keyword) || keyword != "OFF") return false;
+  if (in.end_of_line() && !in.next_record()) return false;
+  std::uint64_t n_vertices = 0, n_faces = 0, n_edges = 0;
+  if (!in.index(n_vertices) || !in.index(n_faces)) return false;
+  if (!in.end_of_line() && !(in.index(n_edges) && in.end_of_line())) return false;
+  if (n_vertices > 0xFFFFFFFEull || n_faces > options.max_faces) return false;
+  raw = RawMesh{};
+  raw.files = {name};
+  raw.vertex_base = 0;
+  for (std::uint64_t k = 0; k < n_vertices; ++k) {
+    if (!in.next_record()) return false;
+    const Source where{0, in.line(), in.column(), -1};
+    Point3 p;
+    if (!in.real(p.x) || !in.real(p.y) || !in.real(p.z)) return false;
+    in.skip_line();  // extras (normal, colour) ignored
+    raw.vertices.push_back({p, where});
+  }
+  for (std::uint64_t k = 0; k < n_faces; ++k) {
+    if (!in.next_record()) return false;
+    const Source where{0, in.line(), in.column(), -1};
+    std::uint64_t n = 0, v = 0;
+    if (!in.index(n)) return false;
+    for (std::uint64_t i = 0; i < n; ++i) {
+      if (!in.index(v) || v >= n_vertices) return false;
+      raw.face_vertices.push_back(static_cast<std::uint32_t>(v));
+    }
+    double colour = 0;
+    for (int extras = 0; !in.end_of_line(); ++extras)
+      if (extras == 4 || !in.real(colour)) return false;
+    raw.end_face(where);
+  }
+  return !in.next_record();
+}
+
+RawMesh read_off_careful(std::string_view text, const std::string& name, const MeshImportOptions& options) {
   RawMesh raw;
   raw.files = {name};
   raw.vertex_base = 0;
@@ -160,6 +200,14 @@ ImportedMesh import_off(std::string_view text, const std::string& name, const Me
     in.context().fail((*t)[0].column,
                       "unexpected data after the " + std::to_string(n_faces) + " faces the header announced",
                       "the header's face count may be too small");
+  return raw;
+}
+
+}  // namespace mesh_detail
+
+ImportedMesh import_off(std::string_view text, const std::string& name, const MeshImportOptions& options) {
+  RawMesh raw;
+  if (!read_off_fast(text, name, options, raw)) raw = read_off_careful(text, name, options);
   return build_mesh(std::move(raw), options);
 }
 

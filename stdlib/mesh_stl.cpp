@@ -22,26 +22,17 @@ constexpr const char* kAsciiHint =
 // Welds vertices by exact coordinate equality (-0 equals +0).
 class Welder {
  public:
-  explicit Welder(RawMesh& raw) : raw_(raw) {}
+  explicit Welder(RawMesh& raw, std::size_t expected = 0) : raw_(raw), index_(expected) {}
   std::uint32_t add(Point3 p, const Source& where) {
-    p = {p.x + 0.0, p.y + 0.0, p.z + 0.0};  // -0 + 0 = +0: one key for both zeros
-    const Key key{std::bit_cast<std::uint64_t>(p.x), std::bit_cast<std::uint64_t>(p.y),
-                  std::bit_cast<std::uint64_t>(p.z)};
-    const auto [it, fresh] = index_.try_emplace(key, static_cast<std::uint32_t>(raw_.vertices.size()));
-    if (fresh) raw_.vertices.push_back({p, where});
-    return it->second;
+    const auto fresh = static_cast<std::uint32_t>(raw_.vertices.size());
+    const std::uint32_t v = index_.insert(p, fresh);
+    if (v == fresh) raw_.vertices.push_back({{p.x + 0.0, p.y + 0.0, p.z + 0.0}, where});  // -0 + 0 = +0
+    return v;
   }
 
  private:
-  using Key = std::array<std::uint64_t, 3>;
-  struct Hash {
-    std::size_t operator()(const Key& k) const {
-      return static_cast<std::size_t>((k[0] * 0x9E3779B97F4A7C15ull) ^ (k[1] * 0xC2B2AE3D27D4EB4Full) ^
-                                      (k[2] * 0x165667B19E3779F9ull));
-    }
-  };
   RawMesh& raw_;
-  std::unordered_map<Key, std::uint32_t, Hash> index_;
+  ExactPointIndex index_;
 };
 
 std::uint32_t read_u32(const unsigned char* p) {
@@ -67,7 +58,7 @@ ImportedMesh read_binary(std::string_view bytes, const std::string& name, const 
   raw.face_vertices.reserve(3 * count);
   raw.face_ends.reserve(count);
   raw.face_sources.reserve(count);
-  Welder welder(raw);
+  Welder welder(raw, count / 2);  // a closed triangle mesh has about half as many vertices as triangles
   for (std::uint64_t k = 0; k < count; ++k) {
     const std::uint64_t offset = 84 + 50 * k;
     for (int c = 0; c < 3; ++c) {
@@ -123,8 +114,69 @@ class AsciiReader {
   std::size_t pos_ = 0;
 };
 
-ImportedMesh read_ascii(std::string_view text, const std::string& name, const MeshImportOptions& options,
-                        bool could_be_binary) {
+}  // namespace
+
+namespace mesh_detail {
+
+bool read_stl_ascii_fast(std::string_view text, const std::string& name, const MeshImportOptions& options,
+                         RawMesh& raw) {
+  raw = RawMesh{};
+  raw.files = {name};
+  raw.face_noun = "facet";
+  raw.vertex_base = 1;
+  raw.welded_by_format = true;
+  Welder welder(raw);
+  FastCursor in(text);
+  std::string_view word;
+  int line = 0, column = 0;  // of `word`
+  // To the next token, across lines.
+  auto advance = [&] { return !in.at_line_end() || (in.end_of_line() && in.next_record()); };
+  auto next = [&] {
+    if (!advance()) return false;
+    line = in.line();
+    column = in.column();
+    return in.word(word);
+  };
+  auto expect = [&](std::string_view keyword) { return next() && word == keyword; };
+  if (!in.next_record() || !expect("solid")) return false;
+  in.skip_line();  // the solid's name
+  for (;;) {
+    if (!in.next_record() || !next()) return false;  // ends inside a solid
+    if (word == "endsolid") {
+      in.skip_line();
+      if (!in.next_record()) return true;  // end of file: done
+      if (!expect("solid")) return false;
+      in.skip_line();
+      continue;
+    }
+    const Source where{0, line, column, -1};
+    if (word != "facet" || raw.face_count() >= options.max_faces || !next()) return false;
+    if (word == "normal") {
+      double ignored = 0;  // even "nan" normals are common
+      for (int k = 0; k < 3; ++k)
+        if (!next() || !parse_real(word, ignored)) return false;
+      if (!next()) return false;
+    }
+    if (word != "outer" || !expect("loop")) return false;
+    for (;;) {
+      if (!next()) return false;
+      if (word == "endloop") break;
+      if (word != "vertex") return false;
+      const Source corner{0, line, column, -1};
+      Point3 p;
+      if (!advance() || !in.real(p.x) || !advance() || !in.real(p.y) || !advance() || !in.real(p.z))
+        return false;
+      raw.face_vertices.push_back(welder.add(p, corner));
+    }
+    if (!expect("endfacet")) return false;
+    raw.end_face(where);
+  }
+}
+
+}  // namespace mesh_detail
+
+RawMesh mesh_detail::read_stl_ascii_careful(std::string_view text, const std::string& name,
+                                            const MeshImportOptions& options, bool could_be_binary) {
   RawMesh raw;
   raw.files = {name};
   raw.face_noun = "facet";
@@ -203,10 +255,8 @@ ImportedMesh read_ascii(std::string_view text, const std::string& name, const Me
     }
     throw;
   }
-  return build_mesh(std::move(raw), options);
+  return raw;
 }
-
-}  // namespace
 
 ImportedMesh import_stl(std::string_view bytes, const std::string& name, const MeshImportOptions& options) {
   if (bytes.empty())
@@ -221,7 +271,11 @@ ImportedMesh import_stl(std::string_view bytes, const std::string& name, const M
   while (!start.empty() && (start[0] == ' ' || start[0] == '\t' || start[0] == '\r' || start[0] == '\n'))
     start.remove_prefix(1);
   const bool ascii = start.size() >= 5 && iequals(start.substr(0, 5), "solid");
-  if (ascii) return read_ascii(bytes, name, options, bytes.size() >= 84);
+  if (ascii) {
+    RawMesh raw;
+    if (read_stl_ascii_fast(bytes, name, options, raw)) return build_mesh(std::move(raw), options);
+    return build_mesh(read_stl_ascii_careful(bytes, name, options, bytes.size() >= 84), options);
+  }
   if (bytes.size() < 84)
     fail(name, 0, 0,
          "not an STL file: " + std::to_string(bytes.size()) +

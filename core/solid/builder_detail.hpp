@@ -104,6 +104,7 @@ struct FaceWork {
   std::vector<std::pair<VertexIndex, VertexIndex>> lines;  // edges traversed both ways, lower index first
   bool rings_are_loops = false;                            // rings[k] == loops[k] for every k
   Plane plane;
+  Vector3 area{};  // the rings' Newell normals summed: twice the face's area vector, holes subtracting
   double size = 0;
   Loops scratch_loops;  // prepare_face's own buffers
   std::vector<VertexIndex> scratch;
@@ -179,12 +180,13 @@ void enter_face_edges(EdgeEntries& edges, FaceIndex face, FaceWork& work);
 void report_non_manifold(const EdgeEntries& edges, Tags face_tags, const VertexTable& vertices,
                          Diagnostics& diagnostics);
 
-// Makes windings consistent per connected component and closed components outward (winding.cpp):
+// Makes windings consistent per connected component and closed components outward (winding.cpp;
+// `areas` as FaceWork::area):
 // reverses the rings of the faces it flips (with their `edges`), updates their planes and the uses in
 // `edges`, and reports each flip. Returns whether every component is closed.
 bool orient_faces(std::vector<Face>& faces, std::vector<Plane>& planes, const std::vector<bool>& valid,
-                  Tags face_tags, EdgeEntries& edges, const VertexTable& vertices,
-                  const SolidBuildOptions& options, Diagnostics& diagnostics);
+                  const std::vector<Vector3>& areas, Tags face_tags, EdgeEntries& edges,
+                  const VertexTable& vertices, const SolidBuildOptions& options, Diagnostics& diagnostics);
 
 // Adds the add_line lines as markings or free lines, fills the solid's edge table from `edges` (kinds,
 // concavity) and turns the rings' entry numbers into indices of solid.edges (edge_table.cpp). The solid

@@ -351,6 +351,11 @@ bool prepare_face(FaceWork& work, bool from_loop, int number, std::int64_t tag, 
   }
 
   work.plane = plane;
+  work.area = outer_normal;
+  if (rings.size() > 1) {
+    work.area = {};
+    for (const Ring& r : rings) work.area += newell_normal(pos, r);
+  }
   return true;
 }
 

@@ -49,7 +49,8 @@ void link_ring_edges(Solid& solid) {
 
 Solid Solid::transformed(const Affine3& worldFromObject) const {
   const double det = worldFromObject.determinant();
-  if (det == 0 || !std::isfinite(det)) throw std::domain_error("transform is singular: it would flatten the solid");
+  if (det == 0 || !std::isfinite(det))
+    throw std::domain_error("transform is singular: it would flatten the solid");
 
   Solid out;
   out.closed = closed;

@@ -132,8 +132,8 @@ SolidBuildResult SolidBuilder::build() const {
   Diagnostics diagnostics(result.diagnostics);
   const SolidBuildOptions options = sanitized(options_);
 
-  VertexTable vertices =
-      resolve_vertices(positions_, Tags{vertex_tags_}, vertex_ids_, ids_, label_ ? &label_ : nullptr, diagnostics);
+  VertexTable vertices = resolve_vertices(positions_, Tags{vertex_tags_}, vertex_ids_, ids_,
+                                          label_ ? &label_ : nullptr, diagnostics);
 
   // Faces one at a time: resolve the references, prepare, enter the edges; the rings go straight into
   // the solid. Faces keep their input positions (invalid ones stay empty; they always come with an error).
@@ -143,6 +143,7 @@ SolidBuildResult SolidBuilder::build() const {
   solid.faces.resize(n);
   solid.planes.resize(n);
   std::vector<bool> valid(n, false);
+  std::vector<Vector3> areas(n);
   std::vector<double> sizes(lines_.empty() ? 0 : n);    // only add_line needs them
   EdgeEntries edges(refs_.size() / 2 + lines_.size());  // a closed surface names each edge twice
   FaceWork work;
@@ -180,6 +181,7 @@ SolidBuildResult SolidBuilder::build() const {
       continue;
     valid[f] = true;
     solid.planes[f] = work.plane;
+    areas[f] = work.area;
     if (!sizes.empty()) sizes[f] = work.size;
     enter_face_edges(edges, static_cast<FaceIndex>(f), work);
     solid.faces[f].rings = std::move(work.rings);
@@ -188,7 +190,7 @@ SolidBuildResult SolidBuilder::build() const {
   if (lines_.empty()) edges.release_index();  // only add_line looks edges up again
 
   solid.closed =
-      orient_faces(solid.faces, solid.planes, valid, face_tags, edges, vertices, options, diagnostics);
+      orient_faces(solid.faces, solid.planes, valid, areas, face_tags, edges, vertices, options, diagnostics);
   solid.crease_angle_deg = options.crease_angle_deg;
   build_edge_table(solid, edges, valid, sizes, lines_, vertices, options, diagnostics);
   solid.vertices = vertices.input_of.empty() ? positions_ : std::move(vertices.kept);

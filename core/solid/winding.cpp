@@ -15,24 +15,6 @@ struct Link {
   bool same_direction;  // both faces run the shared edge the same way: one of them must be reversed
 };
 
-// Six times the signed volume enclosed by the component's faces (divergence theorem: each planar face
-// contributes p·A with p any point of it and A its area vector, holes subtracting), and the sum of the
-// magnitudes of the terms, which bounds the rounding noise.
-std::pair<double, double> six_volume(const std::vector<Face>& faces,
-                                     const std::vector<std::uint32_t>& component,
-                                     const std::vector<std::int8_t>& flip, const std::vector<Point3>& pos) {
-  const Point3 origin = pos[faces[component[0]].rings[0].vertices[0]];
-  double sum = 0, magnitude = 0;
-  for (std::uint32_t f : component) {
-    Vector3 area{};
-    for (const Ring& r : faces[f].rings) area += newell_normal(pos, r);
-    const double term = dot(pos[faces[f].rings[0].vertices[0]] - origin, area);
-    sum += flip[f] ? -term : term;
-    magnitude += std::abs(term);
-  }
-  return {sum, magnitude};
-}
-
 void reverse_face(Face& face, Plane& plane) {
   for (Ring& r : face.rings) {
     if (r.vertices.empty()) continue;
@@ -60,108 +42,197 @@ void links_of(const Face& face, std::uint32_t f, const EdgeEntries& edges, std::
   std::sort(links.begin(), links.end(), [](const Link& a, const Link& b) { return a.edge < b.edge; });
 }
 
-}  // namespace
+// Faces grouped into connected components (across edges shared by exactly two faces), each with the flips
+// that make its windings consistent, relative to the input and to its smallest face. Components are
+// numbered in the order of their smallest faces; invalid faces have component -1.
+struct Components {
+  std::vector<std::int32_t> of;   // per face
+  std::vector<std::int8_t> flip;  // per face: 1 = reverse relative to the input
+  std::vector<bool> conflicted;   // per component: not orientable (reported; its flips are 0)
+};
 
-bool orient_faces(std::vector<Face>& faces, std::vector<Plane>& planes, const std::vector<bool>& valid,
-                  Tags face_tags, EdgeEntries& edges, const VertexTable& vertices,
-                  const SolidBuildOptions& options, Diagnostics& diagnostics) {
-  const std::size_t n = faces.size();
-  std::vector<bool> open(n, false);  // on an edge not shared by exactly two faces
+bool shared_by_two(const EdgeEntry& e) { return e.uses == 2 && e.face[0] != e.face[1]; }
+
+// Union-find with parity over the shared edges, in edge order: no walk over the faces' rings, whose
+// scattered allocations made the search below wait on memory. Returns false on the first conflict.
+bool components_by_union(const std::vector<bool>& valid, const EdgeEntries& edges, Components& out) {
+  const std::size_t n = valid.size();
+  std::vector<std::uint32_t> parent(n);
+  std::vector<std::int8_t> parity(n, 0);  // relative to the parent
+  for (std::size_t f = 0; f < n; ++f) parent[f] = static_cast<std::uint32_t>(f);
+  auto find = [&](std::uint32_t f) {  // root and f's parity to it, halving the path as it goes
+    int p = 0;
+    while (parent[f] != f) {
+      const std::uint32_t up = parent[f];
+      if (parent[up] != up) {  // skip a level: f's parity to its grandparent
+        parity[f] = static_cast<std::int8_t>(parity[f] ^ parity[up]);
+        parent[f] = parent[up];
+      }
+      p ^= parity[f];
+      f = parent[f];
+    }
+    return std::pair<std::uint32_t, int>{f, p};
+  };
   for (std::uint32_t e = 0; e < edges.size(); ++e) {
     const EdgeEntry& entry = edges[e];
-    if (entry.uses == 0 || (entry.uses == 2 && entry.face[0] != entry.face[1])) continue;  // a line, a seam
-    for (int k = 0; k < std::min<int>(entry.uses, 2); ++k)
-      open[static_cast<std::size_t>(entry.face[k])] = true;
+    if (!shared_by_two(entry)) continue;
+    const int want = entry.use(0).forward == entry.use(1).forward;  // same direction: opposite flips
+    const auto [ra, pa] = find(static_cast<std::uint32_t>(entry.face[0]));
+    const auto [rb, pb] = find(static_cast<std::uint32_t>(entry.face[1]));
+    if (ra == rb) {
+      if ((pa ^ pb) != want) return false;
+      continue;
+    }
+    parent[std::max(ra, rb)] = std::min(ra, rb);  // the smaller root stays: roots are smallest faces
+    parity[std::max(ra, rb)] = static_cast<std::int8_t>(pa ^ pb ^ want);
   }
-  for (const EdgeEntries::Extra& x : edges.extra()) open[static_cast<std::size_t>(x.use.face)] = true;
+  out.of.assign(n, -1);
+  out.flip.assign(n, 0);
+  std::int32_t count = 0;
+  for (std::size_t f = 0; f < n; ++f) {
+    if (!valid[f]) continue;
+    const auto [root, p] = find(static_cast<std::uint32_t>(f));
+    out.of[f] = root == f ? count++ : out.of[root];  // the root, the smallest face, came first
+    out.flip[f] = static_cast<std::int8_t>(p);
+  }
+  out.conflicted.assign(static_cast<std::size_t>(count), false);
+  return true;
+}
 
-  std::vector<std::int8_t> flip(n, -1);                        // relative to the input; -1 = not reached yet
-  std::vector<std::pair<std::uint32_t, std::string>> reports;  // (face, message), emitted in face order
+// The same by breadth-first search from each smallest face, reporting the first conflict the search
+// meets in each non-orientable component (edges of a face in edge order).
+void components_by_search(const std::vector<Face>& faces, const std::vector<bool>& valid, Tags face_tags,
+                          const EdgeEntries& edges, const VertexTable& vertices, Diagnostics& diagnostics,
+                          Components& out) {
+  const std::size_t n = faces.size();
+  out.of.assign(n, -1);
+  out.flip.assign(n, -1);  // -1 = not reached yet
+  out.conflicted.clear();
   std::vector<std::uint32_t> component;
   std::vector<Link> links;
-  bool all_closed = true, any_face = false;
   for (std::size_t root = 0; root < n; ++root) {
-    if (!valid[root] || flip[root] != -1) continue;
-    any_face = true;
+    if (!valid[root] || out.flip[root] != -1) continue;
+    const auto id = static_cast<std::int32_t>(out.conflicted.size());
     // Breadth-first (`component` in visiting order doubles as the queue): a neighbour sharing an edge in
     // the same direction gets the opposite flip.
     component.assign(1, static_cast<std::uint32_t>(root));
-    flip[root] = 0;
+    out.flip[root] = 0;
+    out.of[root] = id;
     std::optional<Link> conflict;
     std::uint32_t conflict_face = 0;
     for (std::size_t head = 0; head < component.size(); ++head) {
       const std::uint32_t f = component[head];
       links_of(faces[f], f, edges, links);
       for (const Link& l : links) {
-        const int want = flip[f] ^ static_cast<int>(l.same_direction);
-        if (flip[l.other] == -1) {
-          flip[l.other] = static_cast<std::int8_t>(want);
+        const int want = out.flip[f] ^ static_cast<int>(l.same_direction);
+        if (out.flip[l.other] == -1) {
+          out.flip[l.other] = static_cast<std::int8_t>(want);
+          out.of[l.other] = id;
           component.push_back(l.other);
-        } else if (flip[l.other] != want && !conflict) {
+        } else if (out.flip[l.other] != want && !conflict) {
           conflict = l;
           conflict_face = f;
         }
       }
     }
-    const bool closed =
-        std::none_of(component.begin(), component.end(), [&](std::uint32_t f) { return open[f]; });
-    if (conflict) {
-      const std::uint32_t a = std::min(conflict_face, conflict->other),
-                          b = std::max(conflict_face, conflict->other);
-      const EdgeEntry& e = edges[conflict->edge];
-      diagnostics.error("non-orientable",
-                        "faces " + std::to_string(a + 1) + " and " + std::to_string(b + 1) +
-                            " cannot be wound consistently around edge " + edge_name(vertices, e.lo, e.hi) +
-                            ": the surface is one-sided (like a Möbius band); split it or remove a face",
-                        face_tags[b]);
+    out.conflicted.push_back(conflict.has_value());
+    if (!conflict) continue;
+    const std::uint32_t a = std::min(conflict_face, conflict->other),
+                        b = std::max(conflict_face, conflict->other);
+    const EdgeEntry& e = edges[conflict->edge];
+    diagnostics.error("non-orientable",
+                      "faces " + std::to_string(a + 1) + " and " + std::to_string(b + 1) +
+                          " cannot be wound consistently around edge " + edge_name(vertices, e.lo, e.hi) +
+                          ": the surface is one-sided (like a Möbius band); split it or remove a face",
+                      face_tags[b]);
+    for (std::uint32_t f : component) out.flip[f] = 0;
+  }
+  for (std::int8_t& f : out.flip) f = f == -1 ? 0 : f;
+}
+
+}  // namespace
+
+bool orient_faces(std::vector<Face>& faces, std::vector<Plane>& planes, const std::vector<bool>& valid,
+                  const std::vector<Vector3>& areas, Tags face_tags, EdgeEntries& edges,
+                  const VertexTable& vertices, const SolidBuildOptions& options, Diagnostics& diagnostics) {
+  const std::size_t n = faces.size();
+  std::vector<bool> open(n, false);  // on an edge not shared by exactly two faces
+  for (std::uint32_t e = 0; e < edges.size(); ++e) {
+    const EdgeEntry& entry = edges[e];
+    if (entry.uses == 0 || shared_by_two(entry)) continue;  // a line, a seam
+    for (int k = 0; k < std::min<int>(entry.uses, 2); ++k)
+      open[static_cast<std::size_t>(entry.face[k])] = true;
+  }
+  for (const EdgeEntries::Extra& x : edges.extra()) open[static_cast<std::size_t>(x.use.face)] = true;
+
+  Components comp;
+  if (!components_by_union(valid, edges, comp))
+    components_by_search(faces, valid, face_tags, edges, vertices, diagnostics, comp);
+  std::vector<std::int8_t>& flip = comp.flip;
+
+  // Per component: closed, how many faces the consistent winding flips, and six times the signed volume
+  // it encloses (divergence theorem: each planar face contributes p·A with p any point of it and A its
+  // area vector) with the sum of the terms' magnitudes, which bounds the rounding noise.
+  struct Summary {
+    bool closed = true;
+    std::size_t faces = 0, flipped = 0;
+    Point3 origin{};
+    double volume = 0, noise = 0;
+    bool invert = false, inside_out = false;
+  };
+  const std::vector<Point3>& pos = vertices.positions();
+  std::vector<Summary> sums(comp.conflicted.size());
+  for (std::size_t f = 0; f < n; ++f) {
+    if (comp.of[f] < 0) continue;
+    Summary& s = sums[static_cast<std::size_t>(comp.of[f])];
+    const Point3 corner = pos[faces[f].rings[0].vertices[0]];
+    if (s.faces++ == 0) s.origin = corner;
+    s.flipped += flip[f] == 1;
+    s.closed = s.closed && !open[f];
+    const double term = dot(corner - s.origin, areas[f]);
+    s.volume += flip[f] ? -term : term;
+    s.noise += std::abs(term);
+  }
+  bool all_closed = !sums.empty();
+  for (std::size_t c = 0; c < sums.size(); ++c) {
+    Summary& s = sums[c];
+    if (comp.conflicted[c]) {
       all_closed = false;
-      for (std::uint32_t f : component) flip[f] = 0;
       continue;
     }
-    all_closed = all_closed && closed;
-
+    all_closed = all_closed && s.closed;
     // Which of the two consistent windings: a closed surface encloses positive volume; otherwise the
     // majority of the input wins (ties keep the first face as given).
-    const auto flipped = static_cast<std::size_t>(
-        std::count_if(component.begin(), component.end(), [&](std::uint32_t f) { return flip[f] == 1; }));
-    bool invert = 2 * flipped > component.size();
-    if (closed) {
-      const auto [volume, noise] = six_volume(faces, component, flip, vertices.positions());
-      if (std::abs(volume) > Tolerance::kRelative * noise) invert = volume < 0;
-    }
-    if (invert)
-      for (std::uint32_t f : component) flip[f] ^= 1;
-    const bool inside_out =
-        std::all_of(component.begin(), component.end(), [&](std::uint32_t f) { return flip[f] == 1; });
-
-    for (std::uint32_t f : component) {
-      if (flip[f] != 1) continue;
-      const std::string name = "face " + std::to_string(f + 1);
-      std::string message;
-      if (options.fix_winding)
-        message = inside_out
-                      ? name +
-                            " was wound clockwise seen from outside, like every face of its solid (the solid "
-                            "was inside out); reversed it"
-                      : name + " was wound clockwise seen from outside, unlike its neighbours; reversed it";
-      else
-        message = inside_out
-                      ? name +
-                            " is wound clockwise seen from outside, like every face of its solid (the solid "
-                            "is inside out); list its vertices counter-clockwise"
-                      : name +
-                            " is wound clockwise seen from outside, unlike its neighbours; list its "
-                            "vertices in the opposite order";
-      reports.emplace_back(f, std::move(message));
-    }
+    s.invert = 2 * s.flipped > s.faces;
+    if (s.closed && std::abs(s.volume) > Tolerance::kRelative * s.noise) s.invert = s.volume < 0;
+    s.inside_out = (s.invert ? s.faces - s.flipped : s.flipped) == s.faces;
   }
 
-  std::sort(reports.begin(), reports.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
-  for (auto& [f, message] : reports) {
+  for (std::size_t f = 0; f < n; ++f) {
+    if (comp.of[f] < 0) continue;
+    const Summary& s = sums[static_cast<std::size_t>(comp.of[f])];
+    flip[f] = static_cast<std::int8_t>(flip[f] ^ static_cast<int>(s.invert));
+    if (flip[f] != 1) continue;
+    const std::string name = "face " + std::to_string(f + 1);
     if (options.fix_winding)
-      diagnostics.warning("reoriented", std::move(message), face_tags[f]);
+      diagnostics.warning(
+          "reoriented",
+          s.inside_out
+              ? name +
+                    " was wound clockwise seen from outside, like every face of its solid (the solid "
+                    "was inside out); reversed it"
+              : name + " was wound clockwise seen from outside, unlike its neighbours; reversed it",
+          face_tags[f]);
     else
-      diagnostics.error("reoriented", std::move(message), face_tags[f]);
+      diagnostics.error("reoriented",
+                        s.inside_out ? name +
+                                           " is wound clockwise seen from outside, like every face of its "
+                                           "solid (the solid is inside out); list its vertices "
+                                           "counter-clockwise"
+                                     : name +
+                                           " is wound clockwise seen from outside, unlike its neighbours; "
+                                           "list its vertices in the opposite order",
+                        face_tags[f]);
   }
   if (options.fix_winding) {
     for (std::size_t f = 0; f < n; ++f)
@@ -175,7 +246,7 @@ bool orient_faces(std::vector<Face>& faces, std::vector<Plane>& planes, const st
     for (EdgeEntries::Extra& x : edges.extra())
       if (flip[static_cast<std::size_t>(x.use.face)] == 1) x.use.forward = !x.use.forward;
   }
-  return all_closed && any_face;
+  return all_closed;
 }
 
 }  // namespace hlr::solid_detail
