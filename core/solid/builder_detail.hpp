@@ -150,6 +150,11 @@ class EdgeEntries {
   std::vector<Extra>& extra() { return extra_; }  // traversals beyond the second, in order
   const std::vector<Extra>& extra() const { return extra_; }
   void release_index();  // frees the lookup table once no more get()/find() will come
+  // Asks the memory for the slot of edge ab ahead of its get(): a face's edges are looked up a few faces
+  // early, so the lookups of a large table do not wait on memory one after another.
+  void prefetch(VertexIndex a, VertexIndex b) const {
+    __builtin_prefetch(&slots_[home(std::min(a, b), std::max(a, b))]);
+  }
   // Frees the block holding entry e once e is its last entry: a last pass in order frees as it goes.
   void release_after(std::uint32_t e) {
     if ((e & kMask) == kMask) blocks_[e >> kShift] = std::vector<EdgeEntry>();
@@ -162,13 +167,21 @@ class EdgeEntries {
   // small allocations.
   static constexpr int kShift = 21;
   static constexpr std::uint32_t kMask = (1u << kShift) - 1;
+  // Open addressing with the key in the slot: a lookup reads one slot, not also the entry.
+  struct Slot {
+    VertexIndex lo = 0, hi = 0;
+    std::uint32_t entry = 0;  // entry + 1, 0 = empty
+  };
+  std::size_t home(VertexIndex lo, VertexIndex hi) const {  // Fibonacci hashing: top bits of key × 2^64/φ
+    return static_cast<std::size_t>((((std::uint64_t{lo} << 32) | hi) * 0x9E3779B97F4A7C15ull) >> shift_);
+  }
   std::size_t slot_of(VertexIndex lo, VertexIndex hi) const;  // its slot, or the empty one it would take
   void grow_index();
   std::vector<std::vector<EdgeEntry>> blocks_;
   std::size_t expected_;
   std::uint32_t size_ = 0;
-  // Open addressing: entry + 1, 0 = empty; a power of two, at most half full.
-  std::vector<std::uint32_t> slots_;
+  std::vector<Slot> slots_;  // a power of two, at most half full
+  int shift_ = 64;           // 64 − log2(slots_.size())
   std::vector<Extra> extra_;
 };
 

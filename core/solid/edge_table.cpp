@@ -10,30 +10,31 @@
 namespace hlr::solid_detail {
 
 EdgeEntries::EdgeEntries(std::size_t expected_entries)
-    : expected_(expected_entries),
-      slots_(std::bit_ceil(std::max<std::size_t>(16, 2 * expected_entries)), 0) {}
+    : expected_(expected_entries), slots_(std::bit_ceil(std::max<std::size_t>(16, 2 * expected_entries))) {
+  shift_ = 64 - std::countr_zero(slots_.size());
+}
 
 std::size_t EdgeEntries::slot_of(VertexIndex lo, VertexIndex hi) const {
-  const std::uint64_t key = (std::uint64_t{lo} << 32) | hi;
   const std::size_t mask = slots_.size() - 1;
-  // Fibonacci hashing: the top bits of key × 2^64/φ.
-  for (std::size_t s = (key * 0x9E3779B97F4A7C15ull) >> (64 - std::countr_zero(slots_.size()));;
-       s = (s + 1) & mask) {
-    if (slots_[s] == 0) return s;
-    const EdgeEntry& e = (*this)[slots_[s] - 1];
-    if (e.lo == lo && e.hi == hi) return s;
+  for (std::size_t s = home(lo, hi);; s = (s + 1) & mask) {
+    const Slot& slot = slots_[s];
+    if (slot.entry == 0 || (slot.lo == lo && slot.hi == hi)) return s;
   }
 }
 
 void EdgeEntries::grow_index() {
-  slots_.assign(2 * slots_.size(), 0);
-  for (std::uint32_t e = 0; e < size_; ++e) slots_[slot_of((*this)[e].lo, (*this)[e].hi)] = e + 1;
+  slots_.assign(2 * slots_.size(), Slot{});
+  shift_ = 64 - std::countr_zero(slots_.size());
+  for (std::uint32_t e = 0; e < size_; ++e) {
+    const EdgeEntry& entry = (*this)[e];
+    slots_[slot_of(entry.lo, entry.hi)] = {entry.lo, entry.hi, e + 1};
+  }
 }
 
 std::uint32_t EdgeEntries::get(VertexIndex a, VertexIndex b) {
   const VertexIndex lo = std::min(a, b), hi = std::max(a, b);
   std::size_t s = slot_of(lo, hi);
-  if (slots_[s] != 0) return slots_[s] - 1;
+  if (slots_[s].entry != 0) return slots_[s].entry - 1;
   if (size_ >= kNoEdge - 1) throw std::length_error("SolidBuilder: too many edges");
   if (2 * (std::size_t{size_} + 1) > slots_.size()) {
     grow_index();
@@ -47,12 +48,12 @@ std::uint32_t EdgeEntries::get(VertexIndex a, VertexIndex b) {
   e.lo = lo;
   e.hi = hi;
   blocks_.back().push_back(e);
-  slots_[s] = ++size_;
+  slots_[s] = {lo, hi, ++size_};
   return size_ - 1;
 }
 
 std::uint32_t EdgeEntries::find(VertexIndex a, VertexIndex b) const {
-  const std::uint32_t e = slots_[slot_of(std::min(a, b), std::max(a, b))];
+  const std::uint32_t e = slots_[slot_of(std::min(a, b), std::max(a, b))].entry;
   return e == 0 ? kNoEdge : e - 1;
 }
 
@@ -68,7 +69,7 @@ void EdgeEntries::add_use(std::uint32_t e, EdgeUse use) {
   ++entry.uses;
 }
 
-void EdgeEntries::release_index() { slots_ = std::vector<std::uint32_t>(); }
+void EdgeEntries::release_index() { slots_ = std::vector<Slot>(); }
 
 std::string edge_name(const VertexTable& vertices, VertexIndex a, VertexIndex b) {
   return vertices.id(std::min(a, b)) + "\u2013" + vertices.id(std::max(a, b));

@@ -88,7 +88,14 @@ bool segments_cross(Point2 a, Point2 b, Point2 c, Point2 d, double tolerance) {
 
 DihedralClass classify_dihedral(Vector3 direction, Vector3 nl, Vector3 nr, double crease_angle_deg) {
   const Vector3 c = cross(nl, nr);
-  const double angle = std::atan2(length(c), dot(nl, nr));  // between the normals, in [0, π]
+  const double sine = length(c), cosine = dot(nl, nr);
+  // Most edges are plainly not flat (the angle between the normals is over twice kCoplanarAngle:
+  // sine > 2·tan(kCoplanarAngle)·cosine), and with no crease angle that settles them without atan2.
+  static const double kTwiceFlatSlope = 2 * std::tan(Tolerance::kCoplanarAngle);
+  const bool plainly_bent = cosine <= 0 || sine > kTwiceFlatSlope * cosine;
+  const bool concave = dot(direction, c) < 0;  // see below
+  if (plainly_bent && crease_angle_deg <= 0) return {EdgeKind::Feature, concave};
+  const double angle = std::atan2(sine, cosine);  // in [0, π]
   if (angle < Tolerance::kCoplanarAngle) return {EdgeKind::Flat, false};
   // Concavity (Pfister's test, adapted). Seen from outside, the left face L runs along e = v1 − v0 and
   // lies on the left of it, so it extends from the edge in direction dL = nL × e; the right face runs
@@ -99,7 +106,6 @@ DihedralClass classify_dihedral(Vector3 direction, Vector3 nl, Vector3 nr, doubl
   // i.e. his j1 is our R and his normals are negated, so his c = e·(nR × nL) = −e·(nL × nR): his
   // "c > 0 → concave" is the same test. |nL × nR| = sin(angle) ≥ sin(kCoplanarAngle) here, so the sign
   // is not noise.
-  const bool concave = dot(direction, c) < 0;
   const double crease = crease_angle_deg * std::numbers::pi / 180;
   return {angle <= crease ? EdgeKind::Smooth : EdgeKind::Feature, concave};
 }

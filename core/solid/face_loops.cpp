@@ -137,8 +137,11 @@ bool first_crossing(const Polygon2& a, const Polygon2& b, double tolerance, std:
 
 bool prepare_face(FaceWork& work, bool from_loop, int number, std::int64_t tag, const VertexTable& vertices,
                   const SolidBuildOptions& options, Diagnostics& diagnostics) {
-  const std::string name = "face " + std::to_string(number);
-  auto ring_name = [&](std::size_t k) { return k == 0 ? name : "hole " + std::to_string(k) + " of " + name; };
+  // Names are made only for messages: most faces have none.
+  auto name = [&] { return "face " + std::to_string(number); };
+  auto ring_name = [&](std::size_t k) {
+    return k == 0 ? name() : "hole " + std::to_string(k) + " of " + name();
+  };
 
   // Drop a vertex repeated in a row (also last = first): it adds no edge.
   Loops& clean = work.scratch_loops;
@@ -168,12 +171,17 @@ bool prepare_face(FaceWork& work, bool from_loop, int number, std::int64_t tag, 
   std::swap(work.loops, clean);
   const Loops& loops = work.loops;  // from here on also the face's traversal: fixes edge order
 
-  bool enough = true;
+  bool enough = true, repeats = loops.size() > 1;  // repeats: some vertex is named twice
   for (std::size_t k = 0; k < loops.size(); ++k) {
-    std::vector<VertexIndex>& distinct = work.scratch;
-    distinct.assign(loops[k].begin(), loops[k].end());
-    std::sort(distinct.begin(), distinct.end());
-    const auto n = std::unique(distinct.begin(), distinct.end()) - distinct.begin();
+    // Cleaned, a ring of three names three distinct vertices (the common triangle skips the sort).
+    auto n = static_cast<std::ptrdiff_t>(loops[k].size());
+    if (n != 3) {
+      std::vector<VertexIndex>& distinct = work.scratch;
+      distinct.assign(loops[k].begin(), loops[k].end());
+      std::sort(distinct.begin(), distinct.end());
+      n = std::unique(distinct.begin(), distinct.end()) - distinct.begin();
+      repeats = repeats || n != static_cast<std::ptrdiff_t>(loops[k].size());
+    }
     if (n < 3) {
       enough = false;
       diagnostics.error("too-few-vertices",
@@ -184,18 +192,19 @@ bool prepare_face(FaceWork& work, bool from_loop, int number, std::int64_t tag, 
   }
   if (!enough) return false;
 
-  const Split split = split_loops(loops, work.scratch_loops, work.lines, work.scratch);
+  work.lines.clear();
+  const Split split = repeats ? split_loops(loops, work.scratch_loops, work.lines, work.scratch) : Split{};
   const Loops& split_rings = split.shared ? work.scratch_loops : loops;
   if (split.repeated) {
     diagnostics.error("non-manifold-edge",
-                      name + " runs along edge " + edge_name(vertices, split.repeated_a, split.repeated_b) +
+                      name() + " runs along edge " + edge_name(vertices, split.repeated_a, split.repeated_b) +
                           " twice in the same direction; each edge may appear once in a face's boundary",
                       tag);
     return false;
   }
   if (split_rings.size() == 0) {
     diagnostics.error("zero-area",
-                      name + " has zero area: every edge of its " + (from_loop ? "loop" : "rings") +
+                      name() + " has zero area: every edge of its " + (from_loop ? "loop" : "rings") +
                           " is traversed in both directions",
                       tag);
     return false;
@@ -242,24 +251,27 @@ bool prepare_face(FaceWork& work, bool from_loop, int number, std::int64_t tag, 
   // Twice the area against the size squared: below kRelative, the normal is rounding noise.
   const double area_floor = Tolerance::for_extent(face_size).length * face_size;
   if (twice_area[0] <= area_floor) {
-    diagnostics.error("zero-area", name + " has zero area", tag);
+    diagnostics.error("zero-area", name() + " has zero area", tag);
     return false;
   }
 
   // Plane of the outer ring (holes do not change it); every named vertex must lie on it.
   const Plane plane = newell_plane(pos, rings[0], outer_normal);
+  // Three points lie on their plane: a triangle's deviations are rounding, not warp (far from the origin
+  // they could even exceed the tolerance), so only larger faces are measured.
   double worst = -1;
   VertexIndex worst_vertex = 0;
-  for (VertexIndex v : named) {
-    const double dev = std::abs(plane.signed_distance(pos[v]));
-    if (dev > worst) {
-      worst = dev;
-      worst_vertex = v;
+  if (named.size() > 3)
+    for (VertexIndex v : named) {
+      const double dev = std::abs(plane.signed_distance(pos[v]));
+      if (dev > worst) {
+        worst = dev;
+        worst_vertex = v;
+      }
     }
-  }
   const double allowed = options.planarity_tolerance * face_size;
   if (worst > Tolerance::kPlanarity * face_size) {  // messages are built only when needed
-    const std::string deviation = name + " is not planar: vertex " + vertices.id(worst_vertex) + " lies " +
+    const std::string deviation = name() + " is not planar: vertex " + vertices.id(worst_vertex) + " lies " +
                                   format_for_message(worst) + " off the face's mean plane";
     if (worst > allowed) {
       diagnostics.error("non-planar",

@@ -148,7 +148,22 @@ SolidBuildResult SolidBuilder::build() const {
   EdgeEntries edges(refs_.size() / 2 + lines_.size());  // a closed surface names each edge twice
   FaceWork work;
   std::vector<std::string> unknown;
+  // The outer ring's edges of face g, asked for ahead of their lookups (EdgeEntries::prefetch).
+  constexpr std::size_t kAhead = 8;
+  auto prefetch_edges = [&](std::size_t g) {
+    const std::size_t r = g == 0 ? 0 : face_ends_[g - 1];
+    if (r == face_ends_[g]) return;
+    const std::size_t begin = r == 0 ? 0 : ring_ends_[r - 1], end = ring_ends_[r];
+    if (begin == end || end - begin > kAhead) return;
+    VertexIndex previous = vertices.resolve(refs_[end - 1]);
+    for (std::size_t k = begin; k < end; ++k) {
+      const VertexIndex v = vertices.resolve(refs_[k]);
+      if (v < vertices.usable.size() && previous < vertices.usable.size()) edges.prefetch(previous, v);
+      previous = v;
+    }
+  };
   for (std::size_t f = 0; f < n; ++f) {
+    if (f + kAhead < n) prefetch_edges(f + kAhead);
     // Resolve ids; name each unknown id once.
     work.loops.clear();
     unknown.clear();
