@@ -7,6 +7,7 @@
 #include <cmath>
 #include <map>
 #include <optional>
+#include <stdexcept>
 
 #include "core/format_number.hpp"
 #include "core/solid/solid_builder.hpp"
@@ -131,40 +132,35 @@ class Builder {
     std::size_t raw;
   };
 
-  // Faces by their cycle of vertices (either direction, any starting vertex), kept as two independent
-  // 64-bit hashes of the canonical cycle: a false match among 10^7 faces has odds near 10^-25, and no face
-  // has to be stored twice. Open addressing, like ExactPointIndex.
+  // Faces by the hash of their cycle of vertices. A slot holds 8 bytes (the hash's top half as a
+  // fingerprint, the face), so the table of a large mesh stays in cache; open addressing, like
+  // ExactPointIndex. Faces are numbered in 32 bits: a file of 2^32 faces could not be held anyway.
   class FaceCycleSet {
    public:
     explicit FaceCycleSet(std::size_t expected = 0)
-        : slots_(std::bit_ceil(std::max<std::size_t>(16, 2 * expected)), Slot{0, 0, kEmpty}) {}
-    // The face stored under (a, b), or `face` (now stored) when the cycle is new.
-    std::size_t insert(std::uint64_t a, std::uint64_t b, std::size_t face) {
-      if (2 * (size_ + 1) > slots_.size()) grow();
+        : slots_(std::bit_ceil(std::max<std::size_t>(16, 2 * expected)), Slot{0, kEmpty}) {}
+    // The first stored face whose cycle `same` confirms, or `face` (now stored) when none is.
+    template <typename Same>
+    std::size_t insert(std::uint64_t hash, std::size_t face, const Same& same) {
+      // Sized at construction for every face, so at most half full (the fingerprints cannot be rehashed).
+      if (2 * (size_ + 1) > slots_.size()) throw std::logic_error("FaceCycleSet: more faces than expected");
       const std::size_t mask = slots_.size() - 1;
-      for (std::size_t s = static_cast<std::size_t>(a) & mask;; s = (s + 1) & mask) {
+      const auto fingerprint = static_cast<std::uint32_t>(hash >> 32);
+      for (std::size_t s = static_cast<std::size_t>(hash) & mask;; s = (s + 1) & mask) {
         if (slots_[s].face == kEmpty) {
-          slots_[s] = {a, b, face};
+          slots_[s] = {fingerprint, static_cast<std::uint32_t>(face)};
           ++size_;
           return face;
         }
-        if (slots_[s].a == a && slots_[s].b == b) return slots_[s].face;
+        if (slots_[s].fingerprint == fingerprint && same(slots_[s].face)) return slots_[s].face;
       }
     }
 
    private:
     struct Slot {
-      std::uint64_t a, b;
-      std::size_t face;
+      std::uint32_t fingerprint, face;
     };
-    static constexpr std::size_t kEmpty = ~std::size_t{0};
-    void grow() {
-      std::vector<Slot> old(2 * slots_.size(), Slot{0, 0, kEmpty});
-      old.swap(slots_);
-      size_ = 0;
-      for (const Slot& slot : old)
-        if (slot.face != kEmpty) insert(slot.a, slot.b, slot.face);
-    }
+    static constexpr std::uint32_t kEmpty = 0xffffffffu;
     std::vector<Slot> slots_;
     std::size_t size_ = 0;
   };
@@ -212,12 +208,11 @@ class Builder {
     }
   }
 
-  void add_face(std::size_t f) {
-    const Source& where = raw_.face_sources[f];
-    std::vector<std::uint32_t>& ring = ring_;
+  // Face f's ring through the welding, a vertex repeated in a row (also last = first) dropped; returns
+  // whether one was, and which first.
+  bool clean_ring(std::size_t f, std::vector<std::uint32_t>& ring, std::uint32_t& repeated_vertex) const {
     ring.clear();
     bool repeated = false;
-    std::uint32_t repeated_vertex = 0;
     for (std::uint32_t raw_v : raw_.face(f)) {
       const std::uint32_t v = canon_[raw_v];
       if (!ring.empty() && ring.back() == v) {
@@ -232,6 +227,14 @@ class Builder {
       repeated = true;
       ring.pop_back();
     }
+    return repeated;
+  }
+
+  void add_face(std::size_t f) {
+    const Source& where = raw_.face_sources[f];
+    std::vector<std::uint32_t>& ring = ring_;
+    std::uint32_t repeated_vertex = 0;
+    const bool repeated = clean_ring(f, ring, repeated_vertex);
     // With no vertex repeated in a row, three vertices are distinct; larger rings are counted.
     std::size_t distinct = ring.size();
     if (ring.size() > 3) {
@@ -320,9 +323,8 @@ class Builder {
                      "planar faces to avoid them"));
   }
 
-  // A face with the same cycle of vertices as an earlier one (either direction) is dropped.
-  bool is_duplicate(const std::vector<std::uint32_t>& ring, std::size_t f) {
-    // The canonical cycle: from its smallest vertex, in the direction that reads smaller.
+  // The canonical form of a ring's cycle: from its smallest vertex, in the direction that reads smaller.
+  static void canonical_cycle(const std::vector<std::uint32_t>& ring, std::vector<std::uint32_t>& out) {
     const std::size_t n = ring.size();
     const std::size_t m = static_cast<std::size_t>(std::min_element(ring.begin(), ring.end()) - ring.begin());
     auto step = [n](std::size_t i, bool forward) {
@@ -335,16 +337,22 @@ class Builder {
         forward = ring[i] < ring[j];
         break;
       }
-    FaceKeyHashes h{n, ~std::uint64_t{n}};
-    for (std::size_t k = 0, i = m; k < n; ++k, i = step(i, forward)) {
-      const std::uint32_t v = ring[i];
-      h.a = (h.a ^ v) * 0x100000001B3ull;                               // FNV-1a style
-      h.b = (h.b + v + 0x9E3779B97F4A7C15ull) * 0xBF58476D1CE4E5B9ull;  // splitmix style
-      h.b ^= h.b >> 31;
-    }
-    // Spread the FNV hash's low bits, which pick the slot.
-    const std::uint64_t slot_key = (h.a ^ (h.a >> 29)) * 0x94D049BB133111EBull;
-    const std::size_t earlier = seen_.insert(slot_key ^ (slot_key >> 32), h.b, f);
+    out.clear();
+    for (std::size_t k = 0, i = m; k < n; ++k, i = step(i, forward)) out.push_back(ring[i]);
+  }
+
+  // A face with the same cycle of vertices as an earlier one (either direction) is dropped.
+  bool is_duplicate(const std::vector<std::uint32_t>& ring, std::size_t f) {
+    canonical_cycle(ring, key_);
+    std::uint64_t h = key_.size() * 0x9E3779B97F4A7C15ull;
+    for (std::uint32_t v : key_) h = (h ^ v) * 0xBF58476D1CE4E5B9ull, h ^= h >> 31;
+    // A fingerprint match is checked against the earlier face's own cycle: equal cycles, not equal hashes.
+    const std::size_t earlier = seen_.insert(h, f, [&](std::size_t e) {
+      std::uint32_t ignored = 0;
+      clean_ring(e, other_, ignored);
+      canonical_cycle(other_, other_key_);
+      return other_key_ == key_;
+    });
     if (earlier == f) return false;
     warnings_.add("duplicate-face",
                   at(raw_.face_sources[f], face_name(f) + " repeats " + face_name(earlier) + "; dropped it",
@@ -537,11 +545,9 @@ class Builder {
   std::vector<std::size_t> out_ends_;
   std::vector<std::size_t> out_raw_;
   std::vector<BuiltLine> lines_;
-  struct FaceKeyHashes {
-    std::uint64_t a, b;
-  };
-  FaceCycleSet seen_;                          // cycle of a kept face → its file face
-  std::vector<std::uint32_t> ring_, scratch_;  // one face's ring, reused
+  FaceCycleSet seen_;  // cycle of a kept face → its file face
+  // One face's ring and buffers, reused.
+  std::vector<std::uint32_t> ring_, scratch_, key_, other_, other_key_;
   std::int64_t budget_ = kTriangulationBudget;
 };
 
