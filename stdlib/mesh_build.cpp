@@ -117,7 +117,11 @@ class Builder {
     out_ends_.reserve(n);
     out_raw_.reserve(n);
     seen_ = FaceCycleSet(n);
-    for (std::size_t f = 0; f < n; ++f) add_face(f);
+    constexpr std::size_t kAhead = 16;  // faces whose slot is asked for ahead of its lookup
+    for (std::size_t f = 0; f < n; ++f) {
+      if (f + kAhead < n) prefetch_cycle(f + kAhead);
+      add_face(f);
+    }
     for (std::size_t l = 0; l < raw_.lines.size(); ++l) add_line(l);
     if (out_ends_.empty() && lines_.empty())
       fail(raw_.files.back(), 0, 0,
@@ -139,6 +143,9 @@ class Builder {
    public:
     explicit FaceCycleSet(std::size_t expected = 0)
         : slots_(std::bit_ceil(std::max<std::size_t>(16, 2 * expected)), Slot{0, kEmpty}) {}
+    void prefetch(std::uint64_t hash) const {
+      __builtin_prefetch(&slots_[static_cast<std::size_t>(hash) & (slots_.size() - 1)]);
+    }
     // The first stored face whose cycle `same` confirms, or `face` (now stored) when none is.
     template <typename Same>
     std::size_t insert(std::uint64_t hash, std::size_t face, const Same& same) {
@@ -341,11 +348,26 @@ class Builder {
     for (std::size_t k = 0, i = m; k < n; ++k, i = step(i, forward)) out.push_back(ring[i]);
   }
 
+  static std::uint64_t cycle_hash(const std::vector<std::uint32_t>& cycle) {
+    std::uint64_t h = cycle.size() * 0x9E3779B97F4A7C15ull;
+    for (std::uint32_t v : cycle) h = (h ^ v) * 0xBF58476D1CE4E5B9ull, h ^= h >> 31;
+    return h;
+  }
+
+  // The slot of face g's cycle, asked for ahead of its lookup: the lookups of a large table then do not
+  // wait on memory one after another.
+  void prefetch_cycle(std::size_t g) {
+    std::uint32_t ignored = 0;
+    clean_ring(g, other_, ignored);
+    if (other_.empty()) return;
+    canonical_cycle(other_, other_key_);
+    seen_.prefetch(cycle_hash(other_key_));
+  }
+
   // A face with the same cycle of vertices as an earlier one (either direction) is dropped.
   bool is_duplicate(const std::vector<std::uint32_t>& ring, std::size_t f) {
     canonical_cycle(ring, key_);
-    std::uint64_t h = key_.size() * 0x9E3779B97F4A7C15ull;
-    for (std::uint32_t v : key_) h = (h ^ v) * 0xBF58476D1CE4E5B9ull, h ^= h >> 31;
+    const std::uint64_t h = cycle_hash(key_);
     // A fingerprint match is checked against the earlier face's own cycle: equal cycles, not equal hashes.
     const std::size_t earlier = seen_.insert(h, f, [&](std::size_t e) {
       std::uint32_t ignored = 0;
