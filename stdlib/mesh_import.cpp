@@ -36,6 +36,8 @@ std::string lower(std::string s) {
   return s;
 }
 
+// The whole file in one buffer sized from the file's size up front: no growing copies of a large mesh.
+// (Not mapped: a file truncated while mapped would kill the process with SIGBUS.)
 std::string read_file(const fs::path& path, const std::string& name) {
   std::error_code ec;
   const fs::file_status st = fs::status(path, ec);
@@ -49,16 +51,20 @@ std::string read_file(const fs::path& path, const std::string& name) {
   if (!file)
     fail(name, 0, 0, std::string("cannot open the file: ") + std::strerror(errno),
          "check the path and permissions");
+  const std::uintmax_t expected = fs::file_size(path, ec);
   std::string data;
-  char buffer[1 << 16];
+  // One more byte than expected, so that a read reaching it shows the file grew meanwhile.
+  data.resize(ec ? std::size_t{1} << 16 : static_cast<std::size_t>(expected) + 1);
+  std::size_t size = 0;
   for (;;) {
-    const std::size_t n = std::fread(buffer, 1, sizeof buffer, file.get());
-    data.append(buffer, n);
-    if (n < sizeof buffer) break;
+    size += std::fread(data.data() + size, 1, data.size() - size, file.get());
+    if (size < data.size()) break;
+    data.resize(2 * data.size());
   }
   if (std::ferror(file.get()))
     fail(name, 0, 0, std::string("cannot read the file: ") + std::strerror(errno),
          "check the file and the disk");
+  data.resize(size);
   return data;
 }
 
