@@ -100,7 +100,7 @@ struct Loops {
 // scale of its tolerances).
 struct FaceWork {
   Loops loops;
-  std::vector<Ring> rings;
+  SmallVector<Ring, 1> rings;  // as Face::rings: moves into the solid
   std::vector<std::pair<VertexIndex, VertexIndex>> lines;  // edges traversed both ways, lower index first
   bool rings_are_loops = false;                            // rings[k] == loops[k] for every k
   Plane plane;

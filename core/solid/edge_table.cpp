@@ -131,7 +131,7 @@ FaceIndex face_holding(Point3 a, Point3 b, const Solid& solid, const std::vector
                        const SolidBuildOptions& options) {
   for (std::size_t fi = 0; fi < solid.faces.size(); ++fi) {
     if (!valid[fi]) continue;
-    const std::vector<Ring>& rings = solid.faces[fi].rings;
+    const auto& rings = solid.faces[fi].rings;
     const double tolerance = options.planarity_tolerance * face_sizes[fi];
     const Plane& plane = solid.planes[fi];
     if (std::abs(plane.signed_distance(a)) > tolerance || std::abs(plane.signed_distance(b)) > tolerance)

@@ -213,8 +213,8 @@ bool prepare_face(FaceWork& work, bool from_loop, int number, std::int64_t tag, 
   // The outer ring encloses the others, so it has the largest area (for loops this is how it is found).
   // The rings are allocated at their final size: they move into the solid.
   const std::vector<Point3>& pos = vertices.positions();
-  std::vector<Ring>& rings = work.rings;
-  rings = std::vector<Ring>();
+  SmallVector<Ring, 1>& rings = work.rings;
+  rings.clear();
   rings.reserve(split_rings.size());
   std::vector<double>& twice_area = work.areas;
   twice_area.clear();
@@ -329,7 +329,7 @@ bool prepare_face(FaceWork& work, bool from_loop, int number, std::int64_t tag, 
         std::size_t i = 0, m = 0;
         if (!first_crossing(flat[j], flat[k], allowed, i, m)) continue;
         reported[j] = true;
-        const std::vector<VertexIndex>&ra = rings[j].vertices, &rb = rings[k].vertices;
+        const auto &ra = rings[j].vertices, &rb = rings[k].vertices;
         bad_hole(ring_name(j) + " crosses " + (k == 0 ? std::string("its outer boundary") : ring_name(k)) +
                      " (edges " + edge_name(vertices, ra[i], ra[(i + 1) % ra.size()]) + " and " +
                      edge_name(vertices, rb[m], rb[(m + 1) % rb.size()]) + ")",

@@ -67,7 +67,7 @@ Solid Solid::transformed(const Affine3& worldFromObject) const {
       for (Ring& r : f.rings) {
         // Reversed, edge j joins old vertices n−1−j and n−2−j: old edge (n−2−j) mod n.
         std::reverse(r.vertices.begin(), r.vertices.end());
-        const std::vector<std::uint32_t> old = r.edges;
+        const SmallVector<std::uint32_t, 4> old = r.edges;
         const std::size_t n = old.size();
         for (std::size_t j = 0; j < n; ++j) r.edges[j] = old[(2 * n - 2 - j) % n];
       }

@@ -11,6 +11,7 @@
 
 #include "core/geometry/affine3.hpp"
 #include "core/geometry/vector.hpp"
+#include "core/small_vector.hpp"
 
 namespace hlr {
 
@@ -19,13 +20,14 @@ using FaceIndex = std::int32_t;  // -1 where there is no face
 inline constexpr FaceIndex kNoFace = -1;
 inline constexpr std::uint32_t kNoEdge = 0xffffffffu;
 
-// A closed loop of vertex indices (the closing edge back to the first vertex is implied).
+// A closed loop of vertex indices (the closing edge back to the first vertex is implied). Up to four
+// vertices are kept inline (SmallVector): a triangle or quad face needs no allocation.
 struct Ring {
-  std::vector<VertexIndex> vertices;
+  SmallVector<VertexIndex, 4> vertices;
   // edges[i]: index into Solid::edges of the edge vertices[i]→vertices[i+1], so the engine can tell a
   // face's outline from the seams it shares with its neighbours (kNoEdge if unknown). Filled by
   // link_ring_edges().
-  std::vector<std::uint32_t> edges = {};
+  SmallVector<std::uint32_t, 4> edges = {};
 };
 
 // A planar polygon. rings[0] is the outer boundary, counter-clockwise seen from outside (from the side
@@ -33,7 +35,7 @@ struct Ring {
 // all rings, so a hole touching the outer ring at one vertex is fine. (An island inside a hole is a
 // further ring, counter-clockwise again.)
 struct Face {
-  std::vector<Ring> rings;
+  SmallVector<Ring, 1> rings;  // one inline: most faces have no hole
 };
 
 // Plane n·p + d = 0 with unit outward normal n.

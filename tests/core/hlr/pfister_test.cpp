@@ -35,7 +35,7 @@ std::string str(Point3 p) {
 
 // Newell's normal of the outer ring, computed here (not Solid::planes), unit length.
 Vector3 face_normal(const Solid& solid, std::size_t f) {
-  const std::vector<VertexIndex>& r = solid.faces[f].rings[0].vertices;
+  const auto& r = solid.faces[f].rings[0].vertices;
   Vector3 n{};
   for (std::size_t i = 0; i < r.size(); ++i) {
     const Point3 a = solid.vertices[r[i]], b = solid.vertices[r[(i + 1) % r.size()]];

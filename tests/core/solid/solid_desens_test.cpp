@@ -139,7 +139,7 @@ TEST(SolidDesens, Carrier) {
     SCOPED_TRACE(id("face ", face));
     const Face& f = s.faces[static_cast<std::size_t>(face - 1)];
     ASSERT_EQ(f.rings.size(), 2u);
-    std::vector<VertexIndex> hole = f.rings[1].vertices;
+    std::vector<VertexIndex> hole(f.rings[1].vertices.begin(), f.rings[1].vertices.end());
     for (VertexIndex& v : hole) ++v;
     std::sort(hole.begin(), hole.end());
     std::vector<VertexIndex> expected = nodes;
