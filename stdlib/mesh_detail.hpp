@@ -98,6 +98,11 @@ bool read_stl_ascii_fast(std::string_view text, const std::string& name, const M
 RawMesh read_stl_ascii_careful(std::string_view text, const std::string& name,
                                const MeshImportOptions& options, bool could_be_binary);
 
+// A file of each format read into a raw mesh (fast if possible, else carefully).
+RawMesh read_off(std::string_view text, const std::string& name, const MeshImportOptions& options);
+RawMesh read_obj(std::string_view text, const std::string& name, const MeshImportOptions& options);
+RawMesh read_stl(std::string_view bytes, const std::string& name, const MeshImportOptions& options);
+
 // Repairs the raw mesh (welding, repeated vertices, degenerate faces, non-planar polygons), builds the
 // Solid through SolidBuilder and turns its diagnostics into warnings or a MeshImportError.
 ImportedMesh build_mesh(RawMesh raw, const MeshImportOptions& options);

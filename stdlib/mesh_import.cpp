@@ -90,9 +90,17 @@ std::optional<fs::path> find_partner(const fs::path& path, const std::string& wa
 ImportedMesh import_mesh(const fs::path& path, const MeshImportOptions& options) {
   const std::string name = path.string();
   const std::string ext = lower(path.extension().string());
-  if (ext == ".off") return import_off(read_file(path, name), name, options);
-  if (ext == ".obj") return import_obj(read_file(path, name), name, options);
-  if (ext == ".stl") return import_stl(read_file(path, name), name, options);
+  // The text is let go once read: the solid is built without it.
+  auto parsed =
+      [&](mesh_detail::RawMesh (*read)(std::string_view, const std::string&, const MeshImportOptions&)) {
+        std::string text = read_file(path, name);
+        mesh_detail::RawMesh raw = read(text, name, options);
+        text = std::string();
+        return mesh_detail::build_mesh(std::move(raw), options);
+      };
+  if (ext == ".off") return parsed(&mesh_detail::read_off);
+  if (ext == ".obj") return parsed(&mesh_detail::read_obj);
+  if (ext == ".stl") return parsed(&mesh_detail::read_stl);
   if (ext == ".ver" || ext == ".sur") {
     const bool given_ver = ext == ".ver";
     const std::string other = given_ver ? ".sur" : ".ver";

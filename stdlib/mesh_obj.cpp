@@ -216,10 +216,15 @@ RawMesh read_obj_careful(std::string_view text, const std::string& name, const M
 
 }  // namespace mesh_detail
 
-ImportedMesh import_obj(std::string_view text, const std::string& name, const MeshImportOptions& options) {
+RawMesh mesh_detail::read_obj(std::string_view text, const std::string& name,
+                              const MeshImportOptions& options) {
   RawMesh raw;
   if (!read_obj_fast(text, name, options, raw)) raw = read_obj_careful(text, name, options);
-  return build_mesh(std::move(raw), options);
+  return raw;
+}
+
+ImportedMesh import_obj(std::string_view text, const std::string& name, const MeshImportOptions& options) {
+  return build_mesh(read_obj(text, name, options), options);
 }
 
 }  // namespace hlr::stdlib

@@ -205,10 +205,15 @@ RawMesh read_off_careful(std::string_view text, const std::string& name, const M
 
 }  // namespace mesh_detail
 
-ImportedMesh import_off(std::string_view text, const std::string& name, const MeshImportOptions& options) {
+RawMesh mesh_detail::read_off(std::string_view text, const std::string& name,
+                              const MeshImportOptions& options) {
   RawMesh raw;
   if (!read_off_fast(text, name, options, raw)) raw = read_off_careful(text, name, options);
-  return build_mesh(std::move(raw), options);
+  return raw;
+}
+
+ImportedMesh import_off(std::string_view text, const std::string& name, const MeshImportOptions& options) {
+  return build_mesh(read_off(text, name, options), options);
 }
 
 }  // namespace hlr::stdlib

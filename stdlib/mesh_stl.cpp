@@ -41,7 +41,7 @@ std::uint32_t read_u32(const unsigned char* p) {
 }
 double read_f32(const unsigned char* p) { return static_cast<double>(std::bit_cast<float>(read_u32(p))); }
 
-ImportedMesh read_binary(std::string_view bytes, const std::string& name, const MeshImportOptions& options) {
+RawMesh read_binary(std::string_view bytes, const std::string& name, const MeshImportOptions& options) {
   RawMesh raw;
   raw.files = {name};
   raw.face_noun = "triangle";
@@ -74,7 +74,7 @@ ImportedMesh read_binary(std::string_view bytes, const std::string& name, const 
     }
     raw.end_face({0, 0, 0, static_cast<std::int64_t>(offset)});
   }
-  return build_mesh(std::move(raw), options);
+  return raw;
 }
 
 // Token stream over the lines of an ASCII STL.
@@ -258,7 +258,8 @@ RawMesh mesh_detail::read_stl_ascii_careful(std::string_view text, const std::st
   return raw;
 }
 
-ImportedMesh import_stl(std::string_view bytes, const std::string& name, const MeshImportOptions& options) {
+RawMesh mesh_detail::read_stl(std::string_view bytes, const std::string& name,
+                              const MeshImportOptions& options) {
   if (bytes.empty())
     fail(name, 0, 0, "the file is empty", "an STL file is either ASCII ('solid ...') or binary");
   // Binary exactly when the size matches the triangle count: binary headers may start with "solid" too.
@@ -273,8 +274,9 @@ ImportedMesh import_stl(std::string_view bytes, const std::string& name, const M
   const bool ascii = start.size() >= 5 && iequals(start.substr(0, 5), "solid");
   if (ascii) {
     RawMesh raw;
-    if (read_stl_ascii_fast(bytes, name, options, raw)) return build_mesh(std::move(raw), options);
-    return build_mesh(read_stl_ascii_careful(bytes, name, options, bytes.size() >= 84), options);
+    if (!read_stl_ascii_fast(bytes, name, options, raw))
+      raw = read_stl_ascii_careful(bytes, name, options, bytes.size() >= 84);
+    return raw;
   }
   if (bytes.size() < 84)
     fail(name, 0, 0,
@@ -287,6 +289,10 @@ ImportedMesh import_stl(std::string_view bytes, const std::string& name, const M
            " triangles, which take " + std::to_string(84 + 50 * count) + " bytes, but the file has " +
            std::to_string(bytes.size()),
        "the file was cut off or damaged; export it again");
+}
+
+ImportedMesh import_stl(std::string_view bytes, const std::string& name, const MeshImportOptions& options) {
+  return build_mesh(read_stl(bytes, name, options), options);
 }
 
 }  // namespace hlr::stdlib
