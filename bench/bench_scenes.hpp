@@ -37,7 +37,7 @@ inline Camera orbit_view(Point3 target, double distance, double azimuth_deg, dou
   return lookat_camera(LookatParameters{target + distance * dir, target, {0, 0, 1}, fov, 0, 0});
 }
 
-// kind: city | sphere | torus | mesh; faces: the approximate face count wanted.
+// kind: city | sphere | torus | mesh | prism; faces: the approximate face count wanted.
 inline BenchScene make_scene(const std::string& kind, std::size_t faces) {
   BenchScene b;
   const double f = static_cast<double>(faces);
@@ -72,6 +72,13 @@ inline BenchScene make_scene(const std::string& kind, std::size_t faces) {
     b.scene.objects.push_back({"mesh", stdlib::closed_mesh(static_cast<int>(faces), 1)});
     b.camera = orbit_view({0, 0, 0}, 4, 20, 25, 40);
     std::snprintf(detail, sizeof detail, "closed_mesh(%zu, 1)", faces);
+  } else if (kind == "prism") {
+    // An n-sided prism (faces ≈ n + 2) with every side edge drawn: two faces of n vertices each, the
+    // case where cost must follow the visible pieces, not the size of a face.
+    const int n = std::max(3, static_cast<int>(faces) - 2);
+    b.scene.objects.push_back({"prism", stdlib::cylinder({0, 0, 0}, 1, 1.5, n, 0)});
+    b.camera = orbit_view({0, 0, 0.75}, 5, 20, 30, 40);
+    std::snprintf(detail, sizeof detail, "cylinder(%d sides, crease 0)", n);
   } else {
     std::string message = "unknown scene kind '";
     message += kind;

@@ -81,6 +81,7 @@ void BM_City(benchmark::State& state) { render(state, "city"); }
 void BM_Sphere(benchmark::State& state) { render(state, "sphere"); }
 void BM_Torus(benchmark::State& state) { render(state, "torus"); }
 void BM_ClosedMesh(benchmark::State& state) { render(state, "mesh"); }
+void BM_Prism(benchmark::State& state) { render(state, "prism"); }
 void BM_SelfCrossingsTorus(benchmark::State& state) { self_crossings(state, "torus"); }
 void BM_SelfCrossingsMesh(benchmark::State& state) { self_crossings(state, "mesh"); }
 
@@ -96,6 +97,7 @@ BENCHMARK(BM_City)
 BENCHMARK(BM_Sphere)->Arg(100)->Arg(10000)->Arg(1000000)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_Torus)->Arg(100)->Arg(10000)->Arg(1000000)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_ClosedMesh)->Arg(10000)->Arg(100000)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_Prism)->Arg(2000)->Arg(20000)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_SelfCrossingsTorus)->Arg(10000)->Arg(100000)->Arg(1000000)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_SelfCrossingsMesh)->Arg(100000)->Unit(benchmark::kMillisecond);
 

@@ -38,8 +38,9 @@ void sort_by_cell(std::vector<std::uint64_t>& entries) {
 struct FaceInfo {
   Box3 box;
   std::uint16_t lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0};
-  std::uint8_t count = 0;  // vertices inline; 0: more than four, read them from the face
+  std::uint8_t count = 0;  // vertices inline; 0: more than four, sorted in Finder::big_[big]
   VertexIndex v[4] = {0, 0, 0, 0};
+  std::uint32_t big = 0;
 };
 
 class Finder {
@@ -62,13 +63,18 @@ class Finder {
       if (face.rings.size() == 1 && outer.size() <= 4) {
         info.count = static_cast<std::uint8_t>(outer.size());
         std::copy(outer.begin(), outer.end(), info.v);
+      } else {  // sorted once: a large face meets many neighbours
+        big_.emplace_back();
+        info.big = static_cast<std::uint32_t>(big_.size() - 1);
+        for (const Ring& ring : face.rings)
+          big_.back().insert(big_.back().end(), ring.vertices.begin(), ring.vertices.end());
+        std::sort(big_.back().begin(), big_.back().end());
       }
     }
   }
 
   // What one thread finds, with its own buffers.
   struct Part {
-    std::vector<VertexIndex> sorted;
     FaceCrossingScratch scratch;
     std::vector<CrossingPiece> pieces;
     std::vector<SelfCrossing> found;
@@ -79,7 +85,7 @@ class Finder {
     if (a > b) std::swap(a, b);
     const FaceInfo& ia = info_[a];
     const FaceInfo& ib = info_[b];
-    if (!ia.box.overlaps(ib.box, tol_) || share_a_vertex(a, b, part.sorted)) return;
+    if (!ia.box.overlaps(ib.box, tol_) || share_a_vertex(a, b)) return;
     // A face its solid's options let off plane (legacy data) is only known to within its warp: crossings
     // that small are noise.
     const double tol = tol_ + warp_[a] + warp_[b];
@@ -186,7 +192,7 @@ class Finder {
   }
 
  private:
-  bool share_a_vertex(FaceIndex a, FaceIndex b, std::vector<VertexIndex>& sorted) const {
+  bool share_a_vertex(FaceIndex a, FaceIndex b) const {
     const FaceInfo& ia = info_[a];
     const FaceInfo& ib = info_[b];
     if (ia.count && ib.count) {
@@ -195,20 +201,25 @@ class Finder {
           if (ia.v[i] == ib.v[j]) return true;
       return false;
     }
-    sorted.clear();
-    for (const Ring& r : solid_.faces[a].rings)
-      sorted.insert(sorted.end(), r.vertices.begin(), r.vertices.end());
-    std::sort(sorted.begin(), sorted.end());
-    for (const Ring& r : solid_.faces[b].rings)
-      for (VertexIndex v : r.vertices)
-        if (std::binary_search(sorted.begin(), sorted.end(), v)) return true;
+    if (ia.count || ib.count) {  // a small face against a large one: look its few vertices up
+      const FaceInfo& small = ia.count ? ia : ib;
+      const std::vector<VertexIndex>& sorted = big_[(ia.count ? ib : ia).big];
+      return std::any_of(small.v, small.v + small.count,
+                         [&](VertexIndex v) { return std::binary_search(sorted.begin(), sorted.end(), v); });
+    }
+    const std::vector<VertexIndex>&sa = big_[ia.big], &sb = big_[ib.big];
+    for (std::size_t i = 0, j = 0; i < sa.size() && j < sb.size();) {  // merge the two sorted lists
+      if (sa[i] == sb[j]) return true;
+      sa[i] < sb[j] ? ++i : ++j;
+    }
     return false;
   }
 
   const Solid& solid_;
   double tol_ = 0;
   std::vector<FaceInfo> info_;
-  std::vector<double> warp_;  // per face: the farthest of its vertices from its plane
+  std::vector<double> warp_;                   // per face: the farthest of its vertices from its plane
+  std::vector<std::vector<VertexIndex>> big_;  // the vertices of each face of more than four, sorted
 };
 
 std::vector<SelfCrossing> find_self_crossings(const Solid& solid) {
