@@ -61,8 +61,8 @@ bool wholly_in_front(const std::vector<Point3>& view_vertices, const Camera& cam
 }
 
 void add_occluders(FrameSetup& setup, std::uint32_t object_index, const Solid& solid,
-                   const std::vector<Point3>& view_vertices, const std::vector<std::int8_t>& facing, bool cull,
-                   const Camera& camera) {
+                   const std::vector<Point3>& view_vertices, const std::vector<std::int8_t>& facing,
+                   bool cull, const Camera& camera) {
   std::vector<Point3> ring_points, clipped;
   std::vector<FaceIndex> ring_seams, clipped_seams;
   auto occludes = [&](FaceIndex f) { return f != kNoFace && facing[f] != 0 && !(cull && facing[f] < 0); };
@@ -105,7 +105,8 @@ void add_occluders(FrameSetup& setup, std::uint32_t object_index, const Solid& s
         if (i < ring.edges.size() && ring.edges[i] != kNoEdge) {
           const SolidEdge& e = solid.edges[ring.edges[i]];
           const FaceIndex other = e.left == static_cast<FaceIndex>(f) ? e.right : e.left;
-          if (other != static_cast<FaceIndex>(f) && occludes(other) && facing[other] == facing[f]) seam = other;
+          if (other != static_cast<FaceIndex>(f) && occludes(other) && facing[other] == facing[f])
+            seam = other;
         }
         ring_seams.push_back(seam);
       }
@@ -141,7 +142,8 @@ void add_occluders(FrameSetup& setup, std::uint32_t object_index, const Solid& s
 }  // namespace
 
 void set_picture_tolerance(Candidate& c, const Camera& camera, double length_tolerance) {
-  const double max_abs = std::max({std::abs(c.pic0.x), std::abs(c.pic0.y), std::abs(c.pic1.x), std::abs(c.pic1.y)});
+  const double max_abs =
+      std::max({std::abs(c.pic0.x), std::abs(c.pic0.y), std::abs(c.pic1.x), std::abs(c.pic1.y)});
   const double depth = is_perspective(camera) ? std::min(c.view0.z, c.view1.z) : 1.0;
   c.picture_tolerance = Tolerance::picture(max_abs, camera.focal, length_tolerance, depth);
 }
@@ -150,12 +152,13 @@ namespace {
 
 struct ViewSide {
   bool perspective = true;
-  Point3 eye{};      // world eye (perspective)
+  Point3 eye{};         // world eye (perspective)
   Vector3 direction{};  // world viewing direction
 };
 
 // Per face: +1 front, −1 back, 0 edge-on.
-void face_facing(const Solid& solid, const ViewSide& view, double length_tolerance, std::vector<std::int8_t>& facing) {
+void face_facing(const Solid& solid, const ViewSide& view, double length_tolerance,
+                 std::vector<std::int8_t>& facing) {
   facing.assign(solid.faces.size(), 0);
   for (std::size_t f = 0; f < solid.faces.size(); ++f) {
     const Vector3 n = solid.planes[f].normal;
@@ -175,8 +178,8 @@ void face_facing(const Solid& solid, const ViewSide& view, double length_toleran
 
 // Which edges of one object are candidates, and whether the back-face rules alone hide them.
 void add_edge_candidates(FrameSetup& part, std::uint32_t o, const Solid& solid,
-                         const std::vector<Point3>& view_vertices, const std::vector<std::int8_t>& facing, bool cull,
-                         bool keep_culled) {
+                         const std::vector<Point3>& view_vertices, const std::vector<std::int8_t>& facing,
+                         bool cull, bool keep_culled) {
   for (std::uint32_t e = 0; e < solid.edges.size(); ++e) {
     const SolidEdge& edge = solid.edges[e];
     const int fl = edge.left >= 0 ? facing[edge.left] : 0;
@@ -251,7 +254,8 @@ void clip_and_project(FrameSetup& part, std::size_t from, const Camera& camera, 
 void append(FrameSetup& setup, FrameSetup&& part) {
   const auto point_base = static_cast<std::uint32_t>(setup.polygon_points.size());
   const auto ring_base = static_cast<std::uint32_t>(setup.ring_ends.size());
-  setup.polygon_points.insert(setup.polygon_points.end(), part.polygon_points.begin(), part.polygon_points.end());
+  setup.polygon_points.insert(setup.polygon_points.end(), part.polygon_points.begin(),
+                              part.polygon_points.end());
   setup.polygon_seams.insert(setup.polygon_seams.end(), part.polygon_seams.begin(), part.polygon_seams.end());
   for (std::uint32_t end : part.ring_ends) setup.ring_ends.push_back(end + point_base);
   for (Occluder o : part.occluders) {
@@ -294,7 +298,8 @@ FrameSetup prepare_frame(const Scene& scene, const Camera& camera, bool intersec
       for (std::size_t o = k * chunk; o < std::min(n, (k + 1) * chunk); ++o) {
         const Solid& solid = *scene.objects[o].solid;
         view_vertices.resize(solid.vertices.size());
-        for (std::size_t i = 0; i < solid.vertices.size(); ++i) view_vertices[i] = camera.view(solid.vertices[i]);
+        for (std::size_t i = 0; i < solid.vertices.size(); ++i)
+          view_vertices[i] = camera.view(solid.vertices[i]);
         face_facing(solid, view, ltol, facing[o]);
         cull[o] = solid.closed && wholly_in_front(view_vertices, camera, ltol);
         const auto index = static_cast<std::uint32_t>(o);
@@ -304,8 +309,10 @@ FrameSetup prepare_frame(const Scene& scene, const Camera& camera, bool intersec
       clip_and_project(part, 0, camera, ltol);
       for (Occluder& occ : part.occluders) {
         const Rect2& b = occ.bounds;
-        const double max_abs = std::max({std::abs(b.xmin), std::abs(b.xmax), std::abs(b.ymin), std::abs(b.ymax)});
-        occ.picture_tolerance = Tolerance::picture(max_abs, camera.focal, ltol, view.perspective ? occ.min_depth : 1.0);
+        const double max_abs =
+            std::max({std::abs(b.xmin), std::abs(b.xmax), std::abs(b.ymin), std::abs(b.ymax)});
+        occ.picture_tolerance =
+            Tolerance::picture(max_abs, camera.focal, ltol, view.perspective ? occ.min_depth : 1.0);
       }
       // Parts wait for the join at their exact size: the slack of vectors grown by doubling, summed over
       // all parts, would otherwise add up to a second copy at the frame's peak.
@@ -342,6 +349,19 @@ FrameSetup prepare_frame(const Scene& scene, const Camera& camera, bool intersec
       setup.candidates.reserve(setup.candidates.size() + crossings.candidates.size());
       append(setup, std::move(crossings));
     }
+  }
+
+  // Grids over the rings of large occluders, made once the points are where they stay.
+  std::vector<std::uint32_t> ends;
+  for (Occluder& o : setup.occluders) {
+    const std::uint32_t count = setup.ring_ends[o.first_ring + o.ring_count - 1] - o.first_point;
+    if (count < RingEdgeGrid::kMinPoints) continue;
+    ends.clear();
+    for (std::uint32_t r = 0; r < o.ring_count; ++r)
+      ends.push_back(setup.ring_ends[o.first_ring + r] - o.first_point);
+    o.grid = static_cast<std::int32_t>(setup.ring_grids.size());
+    setup.ring_grids.emplace_back(std::span<const Point2>(setup.polygon_points.data() + o.first_point, count),
+                                  ends);
   }
   return setup;
 }

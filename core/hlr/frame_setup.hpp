@@ -8,6 +8,7 @@
 
 #include "core/camera/camera.hpp"
 #include "core/geometry/rect2.hpp"
+#include "core/hlr/ring_edge_grid.hpp"
 #include "core/hlr/scene.hpp"
 #include "core/hlr/visible_segment.hpp"
 
@@ -22,12 +23,13 @@ struct Occluder {
   Vector3 normal{};
   double offset = 0;
   double eye_side = 1;
-  double min_depth = 0;  // nearest view depth of the clipped polygon
-  Rect2 bounds;          // picture bounds of the clipped polygon
-  double picture_tolerance = 0;  // Tolerance::picture of its projected points
+  double min_depth = 0;           // nearest view depth of the clipped polygon
+  Rect2 bounds;                   // picture bounds of the clipped polygon
+  double picture_tolerance = 0;   // Tolerance::picture of its projected points
   std::uint32_t first_point = 0;  // into FrameSetup::polygon_points
   std::uint32_t first_ring = 0;   // into FrameSetup::ring_ends
   std::uint32_t ring_count = 0;
+  std::int32_t grid = -1;  // into FrameSetup::ring_grids, for occluders of many points
 };
 
 // An edge piece to examine, already clipped to the near plane: view points a→b, picture points.
@@ -43,7 +45,7 @@ struct Candidate {
   // View points of the clipped ends. World points are not stored (the candidate list is the frame's
   // largest structure): they are the camera's inverse applied to these.
   Point3 view0, view1;
-  Point2 pic0, pic1;      // picture points of the clipped ends
+  Point2 pic0, pic1;             // picture points of the clipped ends
   double picture_tolerance = 0;  // Tolerance::picture of its end points (set_picture_tolerance)
 
   std::uint32_t own_object0() const { return object; }
@@ -52,13 +54,14 @@ struct Candidate {
 
 struct FrameSetup {
   std::vector<Occluder> occluders;
-  std::vector<Point2> polygon_points;     // all occluder rings, concatenated
+  std::vector<Point2> polygon_points;  // all occluder rings, concatenated
   // Per point: if the ring edge starting there is a seam — shared with a neighbouring occluder of the
   // same solid that faces the same way, so the two cover it together — that neighbour's face, else kNoFace.
   std::vector<FaceIndex> polygon_seams;
-  std::vector<std::uint32_t> ring_ends;   // end offset (exclusive) of each ring in polygon_points
+  std::vector<std::uint32_t> ring_ends;  // end offset (exclusive) of each ring in polygon_points
+  std::vector<RingEdgeGrid> ring_grids;  // over the rings of the occluders of many points
   std::vector<Candidate> candidates;
-  double length_tolerance = 0;   // view-space
+  double length_tolerance = 0;           // view-space
   Rect2 picture_bounds = Rect2::none();  // of all candidates
 };
 

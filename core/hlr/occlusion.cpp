@@ -21,8 +21,8 @@ double view_param(const Candidate& c, const Camera& camera, double s) {
   return s * z0 / ((1 - s) * z1 + s * z0);
 }
 
-void add_hidden_intervals(const FrameSetup& setup, const Camera& camera, const Candidate& c, const Occluder& o,
-                          OcclusionScratch& scratch, IntervalSet& hidden) {
+void add_hidden_intervals(const FrameSetup& setup, const Camera& camera, const Candidate& c,
+                          const Occluder& o, OcclusionScratch& scratch, IntervalSet& hidden) {
   const double ltol = setup.length_tolerance;
   const double ptol = std::max(c.picture_tolerance, o.picture_tolerance);
   // 1. Behind the plane: g(t) = eye_side·(n·v(t) + offset) < 0, linear in t.
@@ -72,28 +72,35 @@ void add_hidden_intervals(const FrameSetup& setup, const Camera& camera, const C
     ends_heap.resize(o.ring_count);
     ends = ends_heap.data();
   }
-  for (std::uint32_t k = 0; k < o.ring_count; ++k) ends[k] = setup.ring_ends[o.first_ring + k] - o.first_point;
+  for (std::uint32_t k = 0; k < o.ring_count; ++k)
+    ends[k] = setup.ring_ends[o.first_ring + k] - o.first_point;
   const double rlen = std::sqrt(r2);
-  std::uint32_t begin = 0;
-  for (std::uint32_t k = 0; k < o.ring_count; ++k) {
-    const std::uint32_t end = ends[k];
-    for (std::uint32_t i = begin; i < end; ++i) {
-      const Point2 p = pts[i];
-      const Point2 q = pts[i + 1 < end ? i + 1 : begin];
-      const Vector2 e = q - p;
-      const Vector2 ap = p - a;
-      // Ring vertex close to the segment's line: break at its foot.
-      const double sp = dot(ap, r) / r2;
-      if (std::abs(cross(r, ap)) <= ptol * rlen && sp > s_lo && sp < s_hi) breaks.push_back(sp);
-      // Proper crossing. A crossing at or near a ring vertex is also caught by the vertex test above, so
-      // u needs no margin; parallel edges have no crossing of their own.
-      const double den = cross(r, e);
-      if (den == 0) continue;
-      const double s = cross(ap, e) / den;
-      const double u = cross(ap, r) / den;
-      if (u >= 0 && u <= 1 && s > s_lo && s < s_hi) breaks.push_back(s);
+  // Breaks from ring edge p→q.
+  auto test_edge = [&](Point2 p, Point2 q) {
+    const Vector2 e = q - p;
+    const Vector2 ap = p - a;
+    // Ring vertex close to the segment's line: break at its foot.
+    const double sp = dot(ap, r) / r2;
+    if (std::abs(cross(r, ap)) <= ptol * rlen && sp > s_lo && sp < s_hi) breaks.push_back(sp);
+    // Proper crossing. A crossing at or near a ring vertex is also caught by the vertex test above, so
+    // u needs no margin; parallel edges have no crossing of their own.
+    const double den = cross(r, e);
+    if (den == 0) return;
+    const double s = cross(ap, e) / den;
+    const double u = cross(ap, r) / den;
+    if (u >= 0 && u <= 1 && s > s_lo && s < s_hi) breaks.push_back(s);
+  };
+  const RingEdgeGrid* grid = o.grid >= 0 ? &setup.ring_grids[static_cast<std::size_t>(o.grid)] : nullptr;
+  if (grid) {  // only the ring edges near the part behind the plane (some twice: extra breaks are harmless)
+    grid->for_each_edge_near(lerp(a, b, s_lo), lerp(a, b, s_hi), ptol,
+                             [&](std::uint32_t i) { test_edge(pts[i], pts[grid->next(i)]); });
+  } else {
+    std::uint32_t begin = 0;
+    for (std::uint32_t k = 0; k < o.ring_count; ++k) {
+      const std::uint32_t end = ends[k];
+      for (std::uint32_t i = begin; i < end; ++i) test_edge(pts[i], pts[i + 1 < end ? i + 1 : begin]);
+      begin = end;
     }
-    begin = end;
   }
   std::sort(breaks.begin(), breaks.end());
   const std::span<const std::uint32_t> ring_ends(ends, o.ring_count);
@@ -103,7 +110,8 @@ void add_hidden_intervals(const FrameSetup& setup, const Camera& camera, const C
     const double s0 = breaks[i], s1 = breaks[i + 1];
     if (s1 <= s0) continue;
     const Point2 mid = lerp(a, b, 0.5 * (s0 + s1));
-    const bool inside = classify_point(pts, ring_ends, mid, ptol, is_seam) == PointClass::Inside;
+    const bool inside = (grid ? grid->classify(mid, ptol, is_seam)
+                              : classify_point(pts, ring_ends, mid, ptol, is_seam)) == PointClass::Inside;
     if (inside) {
       if (open_lo < 0) open_lo = s0;
       open_hi = s1;

@@ -75,6 +75,7 @@ class Finder {
 
   // What one thread finds, with its own buffers.
   struct Part {
+    std::vector<FaceIndex> cell;  // a crowded cell's faces, for the sweep
     FaceCrossingScratch scratch;
     std::vector<CrossingPiece> pieces;
     std::vector<SelfCrossing> found;
@@ -163,18 +164,20 @@ class Finder {
         const auto cx = static_cast<std::uint16_t>(key & 1023),
                    cy = static_cast<std::uint16_t>((key >> 10) & 1023),
                    cz = static_cast<std::uint16_t>(key >> 20);
-        for (std::size_t p = i; p < end; ++p) {
-          const auto fa = static_cast<FaceIndex>(entries[p] & 0xffffffffu);
-          const FaceInfo& a = info_[fa];
-          for (std::size_t q = p + 1; q < end; ++q) {
-            const auto fb = static_cast<FaceIndex>(entries[q] & 0xffffffffu);
-            const FaceInfo& b = info_[fb];
-            // A pair sharing several cells is examined in the first of them only.
-            if (std::max(a.lo[0], b.lo[0]) != cx || std::max(a.lo[1], b.lo[1]) != cy ||
-                std::max(a.lo[2], b.lo[2]) != cz)
-              continue;
+        // A pair sharing several cells is examined in the first of them only.
+        auto visit = [&](FaceIndex fa, FaceIndex fb) {
+          const FaceInfo &a = info_[fa], &b = info_[fb];
+          if (std::max(a.lo[0], b.lo[0]) == cx && std::max(a.lo[1], b.lo[1]) == cy &&
+              std::max(a.lo[2], b.lo[2]) == cz)
             pair(fa, fb, part);
-          }
+        };
+        if (end - i > kSweepAbove) {
+          sweep_cell(entries, i, end, part.cell, visit);
+        } else {
+          for (std::size_t p = i; p < end; ++p)
+            for (std::size_t q = p + 1; q < end; ++q)
+              visit(static_cast<FaceIndex>(entries[p] & 0xffffffffu),
+                    static_cast<FaceIndex>(entries[q] & 0xffffffffu));
         }
         i = end;
       }
@@ -192,6 +195,43 @@ class Finder {
   }
 
  private:
+  // A cell holding more faces than this is swept, not paired all with all: faces much longer than the
+  // median (the sides of a many-sided prism, as tall as the cells are wide) crowd into a few cells.
+  static constexpr std::size_t kSweepAbove = 32;
+
+  // Calls visit(a, b) (a before b in the cell) for the pairs of the cell's faces whose boxes overlap
+  // along the axis where they overlap least: sorted by the box's low end on it, each face meets the
+  // faces starting before its box ends.
+  template <typename Visit>
+  void sweep_cell(const std::vector<std::uint64_t>& entries, std::size_t begin, std::size_t end,
+                  std::vector<FaceIndex>& faces, Visit&& visit) const {
+    faces.clear();
+    for (std::size_t p = begin; p < end; ++p)
+      faces.push_back(static_cast<FaceIndex>(entries[p] & 0xffffffffu));
+    int axis = 0;
+    double best = -1;
+    for (int k = 0; k < 3; ++k) {  // overlaps expected ∝ total box length / the range they spread over
+      double length = 0, lo = info_[faces[0]].box.lo[k], hi = info_[faces[0]].box.hi[k];
+      for (FaceIndex f : faces) {
+        const Box3& b = info_[f].box;
+        length += b.hi[k] - b.lo[k];
+        lo = std::min(lo, b.lo[k]);
+        hi = std::max(hi, b.hi[k]);
+      }
+      const double score = (hi - lo) / std::max(length, Tolerance::kFloor);
+      if (score > best) best = score, axis = k;
+    }
+    std::sort(faces.begin(), faces.end(), [&](FaceIndex a, FaceIndex b) {
+      const double la = info_[a].box.lo[axis], lb = info_[b].box.lo[axis];
+      return la < lb || (la == lb && a < b);
+    });
+    for (std::size_t p = 0; p < faces.size(); ++p) {
+      const double reach = info_[faces[p]].box.hi[axis] + 2 * tol_;
+      for (std::size_t q = p + 1; q < faces.size() && info_[faces[q]].box.lo[axis] <= reach; ++q)
+        visit(std::min(faces[p], faces[q]), std::max(faces[p], faces[q]));
+    }
+  }
+
   bool share_a_vertex(FaceIndex a, FaceIndex b) const {
     const FaceInfo& ia = info_[a];
     const FaceInfo& ib = info_[b];
