@@ -2,17 +2,39 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include "core/tolerance.hpp"
 
 namespace hlr {
 
-FaceGrid::FaceGrid(const std::vector<Occluder>& occluders, const Rect2& domain) : domain_(domain) {
+FaceGrid::FaceGrid(const FrameSetup& setup, const Rect2& domain) : domain_(domain) {
+  const std::vector<Occluder>& occluders = setup.occluders;
   if (occluders.empty() || domain.empty()) return;
-  // About one cell per occluder, shaped like the domain, at most 2048 a side.
-  const double w = std::max(domain.width(), Tolerance::kFloor), h = std::max(domain.height(), Tolerance::kFloor);
+  // About one cell per occluder, at most 2048 a side, shaped like a typical occluder (the median width
+  // over the median height, within 1:64 either way): the tall thin sides of a many-sided prism then lie
+  // in a few tall thin cells each, instead of down a column of square cells shared with hundreds of others.
+  const double w = std::max(domain.width(), Tolerance::kFloor),
+               h = std::max(domain.height(), Tolerance::kFloor);
   const double cells = std::clamp(static_cast<double>(occluders.size()), 1.0, 2048.0 * 2048.0);
-  nx_ = static_cast<int>(std::clamp(std::ceil(std::sqrt(cells * w / h)), 1.0, 2048.0));
+  std::vector<double> widths, heights;
+  widths.reserve(occluders.size());
+  heights.reserve(occluders.size());
+  for (const Occluder& o : occluders) {
+    if (!o.bounds.overlaps(domain_)) continue;
+    widths.push_back(o.bounds.width());
+    heights.push_back(o.bounds.height());
+  }
+  double aspect = 1;  // cell width over height
+  if (!widths.empty()) {
+    const auto middle = static_cast<std::ptrdiff_t>(widths.size() / 2);
+    std::nth_element(widths.begin(), widths.begin() + middle, widths.end());
+    std::nth_element(heights.begin(), heights.begin() + middle, heights.end());
+    const double mw = widths[static_cast<std::size_t>(middle)],
+                 mh = heights[static_cast<std::size_t>(middle)];
+    if (mw > 0 && mh > 0) aspect = std::clamp(mw / mh, 1.0 / 64, 64.0);
+  }
+  nx_ = static_cast<int>(std::clamp(std::ceil(std::sqrt(cells * w / (h * aspect))), 1.0, 2048.0));
   ny_ = static_cast<int>(std::clamp(std::ceil(cells / nx_), 1.0, 2048.0));
   cell_w_ = w / nx_;
   cell_h_ = h / ny_;
@@ -21,12 +43,41 @@ FaceGrid::FaceGrid(const std::vector<Occluder>& occluders, const Rect2& domain) 
   if (!(cell_h_ > 0) || !std::isfinite(cell_h_)) cell_h_ = 1;
 
   cell_start_.assign(static_cast<std::size_t>(nx_) * ny_ + 1, 0);
+  // An occluder's cells: in each row its bounds span, the columns of its outline's x range within the
+  // row (the outline's extremes in a band of rows lie on its edges there), widened by its tolerance. A
+  // slanted sliver then lies in a thin diagonal run of cells, not in every cell of its box.
+  constexpr std::uint32_t kTracedPoints = 32;  // larger outlines are entered by their bounds
   auto for_cells = [&](const Occluder& o, auto&& fn) {
     if (!o.bounds.overlaps(domain_)) return;
     const int c0 = column(o.bounds.xmin), c1 = column(o.bounds.xmax);
     const int r0 = row(o.bounds.ymin), r1 = row(o.bounds.ymax);
-    for (int r = r0; r <= r1; ++r)
-      for (int c = c0; c <= c1; ++c) fn(static_cast<std::size_t>(r) * nx_ + c);
+    const std::uint32_t end = setup.ring_ends[o.first_ring];
+    const bool traced = r0 != r1 && c0 != c1 && end - o.first_point <= kTracedPoints;
+    for (int r = r0; r <= r1; ++r) {
+      int from = c0, to = c1;
+      if (traced) {
+        const double slack = o.picture_tolerance + Tolerance::kRelative * (cell_w_ + cell_h_);
+        const double y0 = domain_.ymin + r * cell_h_ - slack, y1 = domain_.ymin + (r + 1) * cell_h_ + slack;
+        double xlo = o.bounds.xmax, xhi = o.bounds.xmin;
+        for (std::uint32_t i = o.first_point; i < end; ++i) {
+          const Point2 p = setup.polygon_points[i],
+                       q = setup.polygon_points[i + 1 < end ? i + 1 : o.first_point];
+          const double ylo = std::max(std::min(p.y, q.y), y0), yhi = std::min(std::max(p.y, q.y), y1);
+          if (ylo > yhi) continue;
+          double xa = p.x, xb = q.x;
+          if (q.y != p.y) {
+            xa = p.x + (ylo - p.y) / (q.y - p.y) * (q.x - p.x);
+            xb = p.x + (yhi - p.y) / (q.y - p.y) * (q.x - p.x);
+          }
+          xlo = std::min({xlo, xa, xb});
+          xhi = std::max({xhi, xa, xb});
+        }
+        if (xlo > xhi) continue;  // the outline misses this row (rounding at its ends)
+        from = std::max(c0, column(xlo - slack));
+        to = std::min(c1, column(xhi + slack));
+      }
+      for (int c = from; c <= to; ++c) fn(static_cast<std::size_t>(r) * nx_ + c);
+    }
   };
   for (const Occluder& o : occluders) for_cells(o, [&](std::size_t cell) { ++cell_start_[cell + 1]; });
   for (std::size_t i = 1; i < cell_start_.size(); ++i) cell_start_[i] += cell_start_[i - 1];

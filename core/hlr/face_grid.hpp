@@ -12,13 +12,15 @@ namespace hlr {
 
 class FaceGrid {
  public:
-  // Indexes `occluders` over `domain` (the region where anything is drawn).
-  FaceGrid(const std::vector<Occluder>& occluders, const Rect2& domain);
+  // Indexes the frame's occluders over `domain` (the region where anything is drawn): each in the cells
+  // its outline covers, row by row (by its bounds when the outline has many points).
+  FaceGrid(const FrameSetup& setup, const Rect2& domain);
 
   // Calls visit(occluder index) once for every occluder listed in a cell the segment a→b crosses.
   // `stamp` must have one entry per occluder and `mark` must be unique per call (duplicate filter).
   template <typename Visit>
-  void for_each_near(Point2 a, Point2 b, std::vector<std::uint32_t>& stamp, std::uint32_t mark, Visit&& visit) const;
+  void for_each_near(Point2 a, Point2 b, std::vector<std::uint32_t>& stamp, std::uint32_t mark,
+                     Visit&& visit) const;
 
   bool empty() const { return nx_ == 0; }
 
