@@ -33,50 +33,22 @@ namespace gen = hlr::stdlib;
 
 // Scene families, chosen by seed % kFamilies.
 enum Family {
-  kBoxes,
-  kRotated,
-  kLBlocks,
-  kStairs,
-  kInterpenetrating,
-  kPlates,
-  kSphere,
-  kCloseIn,
-  kMixed,
-  kTorus,
-  kMesh,
-  kCity,
-  kStacked,
-  kAxisView,
-  kRoom,
-  kLattice,
-  kScales,
-  kManySided,
-  kFamilies
+  kBoxes, kRotated, kLBlocks, kStairs, kInterpenetrating, kPlates, kSphere, kCloseIn, kMixed,
+  kTorus, kMesh, kCity, kStacked, kAxisView, kRoom, kLattice, kScales, kManySided, kFamilies
 };
 // 20 seeds per family, 360 scenes: about 2 s in Release, 40 s under ASan+UBSan (Debug), on one core.
 constexpr int kSeeds = 20 * kFamilies;
 
 const char* family_name(int f) {
-  static const char* names[] = {"boxes",
-                                "rotated boxes",
-                                "L-blocks",
-                                "stairs",
-                                "interpenetrating boxes",
-                                "plates with holes",
-                                "sphere",
-                                "eye close in",
-                                "mixed",
-                                "torus",
-                                "bumpy closed mesh",
-                                "box city",
-                                "stacked and touching boxes",
-                                "axis-aligned view (edge-on faces)",
-                                "eye inside a room",
-                                "cube lattice seen along a diagonal",
-                                "sizes from 0.01 to 100",
+  static const char* names[] = {"boxes", "rotated boxes", "L-blocks", "stairs", "interpenetrating boxes",
+                                "plates with holes", "sphere", "eye close in", "mixed", "torus",
+                                "bumpy closed mesh", "box city", "stacked and touching boxes",
+                                "axis-aligned view (edge-on faces)", "eye inside a room",
+                                "cube lattice seen along a diagonal", "sizes from 0.01 to 100",
                                 "faces of many sides (ring-edge grids)"};
   return names[f];
 }
+
 
 struct Case {
   std::string description;
@@ -106,34 +78,30 @@ void build_scene(int family, Rng& r, Case& c, Point3& center, double& radius) {
   switch (family) {
     case kBoxes: {
       const int n = r.integer(2, 5);
-      for (int i = 0; i < n; ++i)
-        add(c, "box" + std::to_string(i), random_box(r, {-4, -4, 0}, {2, 2, 2}, 0.5, 2.5));
+      for (int i = 0; i < n; ++i) add(c, "box" + std::to_string(i), random_box(r, {-4, -4, 0}, {2, 2, 2}, 0.5, 2.5));
       break;
     }
     case kRotated: {
       const int n = r.integer(2, 4);
       for (int i = 0; i < n; ++i)
         add(c, "rbox" + std::to_string(i),
-            gen::rotated_box(r.point({-3, -3, 0}, {3, 3, 2}), {r(0.5, 3), r(0.5, 3), r(0.5, 3)},
-                             r.direction(), r(0, 180)));
+            gen::rotated_box(r.point({-3, -3, 0}, {3, 3, 2}), {r(0.5, 3), r(0.5, 3), r(0.5, 3)}, r.direction(), r(0, 180)));
       break;
     }
     case kLBlocks: {
       add(c, "l0", gen::l_block(r.point({-4, -4, 0}, {-1, -1, 0}), {r(2, 4), r(1, 3), r(2, 4)}, 1, 1));
       // A second L turned by Solid::transformed, and a box.
       const Solid l = gen::l_block({-1, -1, 0}, {2.5, 2, 3}, r(0.5, 1.5), r(0.5, 1.5));
-      add(c, "l1",
-          l.transformed(Affine3::rotation({0, 0, 1}, r(0, 2 * std::numbers::pi))
-                            .then(Affine3::translation({r(0, 3), r(0, 3), 0}))));
+      add(c, "l1", l.transformed(Affine3::rotation({0, 0, 1}, r(0, 2 * std::numbers::pi))
+                                     .then(Affine3::translation({r(0, 3), r(0, 3), 0}))));
       add(c, "box", random_box(r, {-2, 1, 0}, {1, 3, 0.5}, 0.5, 2));
       break;
     }
     case kStairs: {
       const int steps = r.integer(2, 6);
       const Solid s = gen::stairs(steps, r(1.5, 3), r(0.2, 0.6), r(0.3, 0.8));
-      add(c, "stairs",
-          s.transformed(Affine3::rotation({0, 0, 1}, r(0, 2 * std::numbers::pi))
-                            .then(Affine3::translation({-1.5, -1.5, 0}))));
+      add(c, "stairs", s.transformed(Affine3::rotation({0, 0, 1}, r(0, 2 * std::numbers::pi))
+                                         .then(Affine3::translation({-1.5, -1.5, 0}))));
       add(c, "box", random_box(r, {-4, -4, 0}, {3, 3, 0.5}, 0.5, 1.5));
       center = {0, 0, 0.8};
       radius = 4;
@@ -150,22 +118,19 @@ void build_scene(int family, Rng& r, Case& c, Point3& center, double& radius) {
         add(c, "ibox" + std::to_string(i), gen::box(b, b + size));
         a = b;
       }
-      add(c, "irot",
-          gen::rotated_box({r(-0.5, 0.5), r(-0.5, 0.5), r(1, 2)}, {r(3, 5), r(0.3, 1), r(0.3, 1)},
-                           r.direction(), r(0, 180)));
+      add(c, "irot", gen::rotated_box({r(-0.5, 0.5), r(-0.5, 0.5), r(1, 2)}, {r(3, 5), r(0.3, 1), r(0.3, 1)},
+                                      r.direction(), r(0, 180)));
       break;
     }
     case kPlates: {
       // A horizontal plate over boxes (seen through its holes) and a standing plate turned about z.
-      add(c, "plate",
-          gen::plate_with_holes({-3, -3, 2}, {3, 3, 2.3}, r.integer(1, 3), r.integer(1, 3), r(0.3, 0.7),
-                                r.integer(3, 6)));
+      add(c, "plate", gen::plate_with_holes({-3, -3, 2}, {3, 3, 2.3}, r.integer(1, 3), r.integer(1, 3), r(0.3, 0.7),
+                                            r.integer(3, 6)));
       add(c, "under", random_box(r, {-2, -2, 0}, {0.5, 0.5, 0.3}, 0.8, 1.5));
       const Solid wall = gen::plate_with_holes({-2, -2, -0.15}, {2, 1, 0.15}, 2, 1, 0.6, 4);
-      add(c, "wall",
-          wall.transformed(Affine3::rotation({1, 0, 0}, std::numbers::pi / 2)
-                               .then(Affine3::rotation({0, 0, 1}, r(0, std::numbers::pi)))
-                               .then(Affine3::translation({r(-1, 1), r(-1, 1), 2.5}))));
+      add(c, "wall", wall.transformed(Affine3::rotation({1, 0, 0}, std::numbers::pi / 2)
+                                          .then(Affine3::rotation({0, 0, 1}, r(0, std::numbers::pi)))
+                                          .then(Affine3::translation({r(-1, 1), r(-1, 1), 2.5}))));
       center = {0, 0, 2};
       break;
     }
@@ -175,8 +140,7 @@ void build_scene(int family, Rng& r, Case& c, Point3& center, double& radius) {
       const double crease = r.integer(0, 1) ? 0.0 : 60.0;
       add(c, "sphere", gen::sphere({0, 0, 1.5}, 1.5, slices, stacks, crease));
       // A box poking into the sphere (intersection lines on a curved mesh) and one beside it.
-      add(c, "poke",
-          gen::rotated_box({r(0.8, 1.4), r(-0.3, 0.3), r(1, 2)}, {2, 0.6, 0.6}, r.direction(), r(0, 40)));
+      add(c, "poke", gen::rotated_box({r(0.8, 1.4), r(-0.3, 0.3), r(1, 2)}, {2, 0.6, 0.6}, r.direction(), r(0, 40)));
       add(c, "side", random_box(r, {-4, -4, 0}, {-2.5, 2, 0.5}, 0.5, 1.5));
       center = {0, 0, 1.5};
       radius = 4;
@@ -194,24 +158,20 @@ void build_scene(int family, Rng& r, Case& c, Point3& center, double& radius) {
     case kMixed: {
       add(c, "open", gen::open_box({-3, -3, 0}, {-1, -1, r(1, 2)}));
       add(c, "marked", gen::marked_box({0.5, -3, 0}, {2.5, -1, r(0.5, 1.5)}));
-      add(c, "cyl",
-          gen::cylinder({-1.5, 1.5, 0}, r(0.5, 1), r(1, 3), r.integer(6, 12), r.integer(0, 1) ? 0 : 70));
+      add(c, "cyl", gen::cylinder({-1.5, 1.5, 0}, r(0.5, 1), r(1, 3), r.integer(6, 12), r.integer(0, 1) ? 0 : 70));
       add(c, "stairs", gen::stairs(3, 1.5, 0.4, 0.5).transformed(Affine3::translation({0.5, 0.5, 0})));
       center = {-0.5, -0.5, 0.8};
       break;
     }
     case kManySided: {
       // Faces of more points than RingEdgeGrid::kMinPoints, so the engine tests against them through
-      // its grid: a prism of many sides (caps of 130 to 400 points) lying or standing, a plate with many
-      // holes over a box, and a box half through the prism.
-      const int sides = r.integer(130, 400);
-      const Solid prism = gen::cylinder({0, 0, 0}, r(1, 2), r(0.5, 2.5), sides, 0);
-      add(c, "prism",
-          prism.transformed(
-              Affine3::rotation(r.direction(), r(0, 1.5)).then(Affine3::translation({0, 0, 1.5}))));
-      add(c, "plate",
-          gen::plate_with_holes({-3, -3, 3.2}, {3, 3, 3.4}, r.integer(6, 8), r.integer(6, 8), r(0.3, 0.7),
-                                4));
+      // its grid: a prism of many sides (caps of 130 to 400 points) at a random tilt, a plate with many
+      // holes above it, a bar through the prism and a box beside it.
+      const Solid prism = gen::cylinder({0, 0, 0}, r(1, 2), r(0.5, 2.5), r.integer(130, 400), 0);
+      add(c, "prism", prism.transformed(Affine3::rotation(r.direction(), r(0, 1.5))
+                                            .then(Affine3::translation({0, 0, 1.5}))));
+      add(c, "plate", gen::plate_with_holes({-3, -3, 3.2}, {3, 3, 3.4}, r.integer(6, 8), r.integer(6, 8),
+                                            r(0.3, 0.7), 4));
       add(c, "through", gen::rotated_box({r(-1, 1), r(-1, 1), 1.5}, {4, 0.5, 0.5}, r.direction(), r(0, 90)));
       add(c, "under", random_box(r, {-3, 1.5, 0}, {1, 1, 0.5}, 0.5, 1.5));
       center = {0, 0, 2};
@@ -220,18 +180,16 @@ void build_scene(int family, Rng& r, Case& c, Point3& center, double& radius) {
     }
     case kTorus: {
       const double crease = r.integer(0, 1) ? 0.0 : 50.0;
-      add(c, "torus",
-          gen::torus({0, 0, 1}, 2, r(0.5, 0.9), r.integer(10, 18), r.integer(6, 10), crease)
-              .transformed(Affine3::rotation(r.direction(), r(0, 1.5))));
+      add(c, "torus", gen::torus({0, 0, 1}, 2, r(0.5, 0.9), r.integer(10, 18), r.integer(6, 10), crease)
+                          .transformed(Affine3::rotation(r.direction(), r(0, 1.5))));
       add(c, "pin", gen::rotated_box({0, 0, 1}, {0.5, 0.5, 5}, r.direction(), r(0, 60)));
       center = {0, 0, 1};
       radius = 3.5;
       break;
     }
     case kMesh: {
-      add(c, "mesh",
-          gen::closed_mesh(r.integer(100, 400), static_cast<unsigned>(r.integer(0, 1000)))
-              .transformed(Affine3::scaling(2, 2, 2).then(Affine3::translation({0, 0, 2}))));
+      add(c, "mesh", gen::closed_mesh(r.integer(100, 400), static_cast<unsigned>(r.integer(0, 1000)))
+                         .transformed(Affine3::scaling(2, 2, 2).then(Affine3::translation({0, 0, 2}))));
       add(c, "poke", gen::rotated_box({r(-1, 1), r(-1, 1), 2}, {5, 0.6, 0.6}, r.direction(), r(0, 180)));
       center = {0, 0, 2};
       radius = 3;
@@ -268,8 +226,7 @@ void build_scene(int family, Rng& r, Case& c, Point3& center, double& radius) {
       // Boxes on a grid; the camera looks exactly along an axis (set in make_case) so faces are edge-on.
       for (int i = 0; i < 4; ++i) {
         const double x = -3 + 1.6 * i;
-        add(c, "grid" + std::to_string(i),
-            gen::box({x, r(-2, 1), 0}, {x + r(0.5, 1.2), r(1.5, 3), i % 2 ? 1.0 : 2.0}));
+        add(c, "grid" + std::to_string(i), gen::box({x, r(-2, 1), 0}, {x + r(0.5, 1.2), r(1.5, 3), i % 2 ? 1.0 : 2.0}));
       }
       center = {0, 0, 1};
       break;
@@ -279,8 +236,7 @@ void build_scene(int family, Rng& r, Case& c, Point3& center, double& radius) {
       add(c, "room", gen::box({-5, -5, 0}, {5, 5, 3}));
       for (int i = 0; i < 3; ++i)
         add(c, "furniture" + std::to_string(i), random_box(r, {-4, -4, 0}, {3, 3, 0.5}, 0.4, 1.5));
-      add(c, "beam",
-          gen::rotated_box({0, 0, 2.5}, {12, 0.3, 0.3}, {0, 0, 1}, r(0, 180)));  // pierces the walls
+      add(c, "beam", gen::rotated_box({0, 0, 2.5}, {12, 0.3, 0.3}, {0, 0, 1}, r(0, 180)));  // pierces the walls
       center = {0, 0, 1};
       break;
     }
@@ -292,8 +248,7 @@ void build_scene(int family, Rng& r, Case& c, Point3& center, double& radius) {
         for (int y = 0; y < 3; ++y)
           for (int z = 0; z < 3; ++z)
             if (r.integer(0, 2) == 0)
-              add(c, "cube" + std::to_string(i++),
-                  gen::box({2.0 * x, 2.0 * y, 2.0 * z}, {2.0 * x + 1, 2.0 * y + 1, 2.0 * z + 1}));
+              add(c, "cube" + std::to_string(i++), gen::box({2.0 * x, 2.0 * y, 2.0 * z}, {2.0 * x + 1, 2.0 * y + 1, 2.0 * z + 1}));
       if (i == 0) add(c, "cube", gen::box({0, 0, 0}, {1, 1, 1}));
       center = {2.5, 2.5, 2.5};
       radius = 5;
@@ -369,10 +324,7 @@ Case make_case(unsigned seed) {
     // With a frame, half the time zoom in on a vertex so that the frame clips the scene.
     const bool zoom = aspect > 0 && r.integer(0, 1) == 1;
     if (zoom) {
-      const Solid& s =
-          *c.scene
-               .objects[static_cast<std::size_t>(r.integer(0, static_cast<int>(c.scene.objects.size()) - 1))]
-               .solid;
+      const Solid& s = *c.scene.objects[static_cast<std::size_t>(r.integer(0, static_cast<int>(c.scene.objects.size()) - 1))].solid;
       c.target = s.vertices[static_cast<std::size_t>(r.integer(0, static_cast<int>(s.vertices.size()) - 1))];
       c.zoomed = true;
     }
@@ -380,13 +332,12 @@ Case make_case(unsigned seed) {
       const double height = (zoom ? r(0.4, 0.9) : r(1.5, 3)) * radius;
       c.camera = ortho_camera(OrthoParameters{c.eye, c.target, {0, 0, 1}, height, aspect});
     } else {
-      c.camera =
-          lookat_camera(LookatParameters{c.eye, c.target, {0, 0, 1}, zoom ? r(8, 20) : r(30, 70), aspect, 0});
+      c.camera = lookat_camera(LookatParameters{c.eye, c.target, {0, 0, 1}, zoom ? r(8, 20) : r(30, 70), aspect, 0});
     }
     if (zoom) d << ", zoomed in";
   }
-  d << ", " << (ortho ? "ortho" : "lookat") << " eye " << str(c.eye) << " target " << str(c.target)
-    << " aspect " << aspect;
+  d << ", " << (ortho ? "ortho" : "lookat") << " eye " << str(c.eye) << " target " << str(c.target) << " aspect "
+    << aspect;
   for (const auto& o : c.scene.objects) d << "\n  " << o.name << ": " << o.solid->faces.size() << " faces";
   c.description = d.str();
   return c;
@@ -416,8 +367,7 @@ TEST_P(HlrProperty, Random) {
   if (family != kCloseIn && family != kAxisView && family != kLattice && family != kScales) {
     EXPECT_LT(report.drawn_ambiguous, report.drawn_samples / 4 + 8) << report.summary();
   }
-  if (HasFailure() || std::getenv("HLR_PROPERTY_VERBOSE"))
-    std::cout << "seed " << seed << ": " << report.summary() << "\n";
+  if (HasFailure() || std::getenv("HLR_PROPERTY_VERBOSE")) std::cout << "seed " << seed << ": " << report.summary() << "\n";
   // The result must not depend on the number of threads (checked on every fourth seed).
   if (seed % 4 == 2) {
     HlrOptions one;
@@ -426,8 +376,7 @@ TEST_P(HlrProperty, Random) {
     ASSERT_EQ(single.segments.size(), result.segments.size());
     for (std::size_t i = 0; i < single.segments.size(); ++i) {
       const VisibleSegment &a = single.segments[i], &b = result.segments[i];
-      EXPECT_TRUE(a.p0 == b.p0 && a.p1 == b.p1 && a.object == b.object && a.edge == b.edge &&
-                  a.source == b.source)
+      EXPECT_TRUE(a.p0 == b.p0 && a.p1 == b.p1 && a.object == b.object && a.edge == b.edge && a.source == b.source)
           << "segment " << i << " differs between 1 thread and the default";
     }
   }
@@ -452,11 +401,10 @@ TEST_P(HlrProperty, HiddenLayer) {
     if (!s.hidden) continue;
     for (Point3 p : segment_samples(s)) {
       const Verdict v = oracle.classify(p);
-      const bool in_front =
-          c.camera.projection == Projection::Orthographic || c.camera.view(p).z > c.camera.near_depth;
+      const bool in_front = c.camera.projection == Projection::Orthographic || c.camera.view(p).z > c.camera.near_depth;
       if (v.visibility == Visibility::Visible && in_front && reported++ < 5)
-        ADD_FAILURE() << "hidden piece of object " << s.object << " edge " << s.edge << " from " << str(s.p0)
-                      << " to " << str(s.p1) << " has a visible point " << str(p);
+        ADD_FAILURE() << "hidden piece of object " << s.object << " edge " << s.edge << " from " << str(s.p0) << " to "
+                      << str(s.p1) << " has a visible point " << str(p);
     }
   }
 }
@@ -486,14 +434,14 @@ TEST(HlrPropertyOracle, BoxHidesWhatIsBehindIt) {
   const RayCaster oracle(scene, camera);
   EXPECT_EQ(oracle.visibility({-3, 0, 0}), Visibility::Hidden);
   EXPECT_EQ(oracle.visibility({-3, 5, 0}), Visibility::Visible);
-  EXPECT_EQ(oracle.visibility({1, 1, 0.3}), Visibility::Visible);  // front silhouette edge
-  EXPECT_EQ(oracle.visibility({-1, 0.5, 1}),
-            Visibility::Hidden);  // back top edge: the ray enters the front face
-  EXPECT_EQ(oracle.visibility({-1, 1, 0}), Visibility::Hidden);  // back vertical edge behind the box
-  EXPECT_EQ(oracle.visibility({11, 0, 0}), Visibility::Hidden);  // behind the eye
+  EXPECT_EQ(oracle.visibility({1, 1, 0.3}), Visibility::Visible);    // front silhouette edge
+  EXPECT_EQ(oracle.visibility({-1, 0.5, 1}), Visibility::Hidden);    // back top edge: the ray enters the front face
+  EXPECT_EQ(oracle.visibility({-1, 1, 0}), Visibility::Hidden);      // back vertical edge behind the box
+  EXPECT_EQ(oracle.visibility({11, 0, 0}), Visibility::Hidden);      // behind the eye
   // The near plane clips: a point just past the eye is in front of the near plane.
   EXPECT_EQ(oracle.visibility({10 - 1e-5, 0, 0}), Visibility::Hidden);
 }
+
 
 // The checks have teeth: a frame with a piece removed, a hidden piece shown, or a piece stretched past
 // its end must fail them. (A checker that passes everything would make the property tests worthless.)
@@ -535,8 +483,7 @@ TEST(HlrPropertyOracle, ChecksCatchInjectedErrors) {
     FrameResult wrong = visible;
     wrong.segments.push_back(s);
     wrong.segments.back().hidden = false;
-    EXPECT_FALSE(check_frame(scene, camera, wrong).ok())
-        << "showing hidden " << str(s.p0) << " -> " << str(s.p1);
+    EXPECT_FALSE(check_frame(scene, camera, wrong).ok()) << "showing hidden " << str(s.p0) << " -> " << str(s.p1);
     ++shown;
   }
   EXPECT_GT(shown, 3);
@@ -545,6 +492,7 @@ TEST(HlrPropertyOracle, ChecksCatchInjectedErrors) {
   twice.segments.push_back(visible.segments.front());
   EXPECT_FALSE(check_frame(scene, camera, twice).ok());
 }
+
 
 // ---- minimal reproductions of engine bugs the random scenes found (kept as regression tests) -----------
 
@@ -572,19 +520,18 @@ TEST(HlrEngineRepro, EdgeBehindAnOccludersInteriorEdgeIsHidden) {
   }
 }
 
-// Found by seeds 152, 254, 322 of the sizes family (then with a 200 × 59 × 40 block beside the boxes).
-// Without a frame the engine's picture tolerance is 1e-9 × the largest |picture coordinate| of any candidate;
-// geometry clipped at the near plane far off-axis projects to ~focal·size/near (here ~3e8), so the tolerance
-// grows to ~0.3 picture units and small, nearby objects lose whole edges (pieces shorter than it are dropped)
-// and show hidden parts. The tolerance should not depend on how far off-axis the near plane clips something.
+// Found by seeds 152, 254, 322 of the sizes family (then with a 200 × 59 × 40 block beside the boxes). Without a frame the engine's picture tolerance is
+// 1e-9 × the largest |picture coordinate| of any candidate; geometry clipped at the near plane far off-axis
+// projects to ~focal·size/near (here ~3e8), so the tolerance grows to ~0.3 picture units and small, nearby
+// objects lose whole edges (pieces shorter than it are dropped) and show hidden parts. The tolerance should
+// not depend on how far off-axis the near plane clips something.
 TEST(HlrEngineRepro, GeometryClippedFarOffAxisDoesNotCoarsenThePicture) {
   Scene scene;
   scene.objects.push_back({"A", gen::box({0, 0, 0}, {0.04, 0.04, 0.04})});
   scene.objects.push_back({"B", gen::box({0.005, -0.1, 0.0}, {0.02, -0.08, 0.03})});  // hides part of A
   // Mostly behind the eye; its far side reaches in front of the near plane about 90° off the view axis.
   scene.objects.push_back({"big", gen::box({-100, -60, 0}, {100, -1, 40})});
-  const Camera camera =
-      lookat_camera(LookatParameters{{-0.05, -0.3, 0.1}, {0.02, 0.02, 0.02}, {0, 0, 1}, 40, 0, 1e-6});
+  const Camera camera = lookat_camera(LookatParameters{{-0.05, -0.3, 0.1}, {0.02, 0.02, 0.02}, {0, 0, 1}, 40, 0, 1e-6});
   const FrameResult result = render_frame(scene, camera);
   const CheckReport report = check_frame(scene, camera, result);
   EXPECT_TRUE(report.ok()) << report.summary();
