@@ -98,6 +98,15 @@ bool read_stl_ascii_fast(std::string_view text, const std::string& name, const M
 RawMesh read_stl_ascii_careful(std::string_view text, const std::string& name,
                                const MeshImportOptions& options, bool could_be_binary);
 
+// The fast reader's raw mesh, or the careful reader's where the fast one declines.
+template <typename Fast, typename Careful>
+RawMesh fast_or_careful(Fast fast, Careful careful, std::string_view text, const std::string& name,
+                        const MeshImportOptions& options) {
+  RawMesh raw;
+  if (!fast(text, name, options, raw)) raw = careful(text, name, options);
+  return raw;
+}
+
 // A file of each format read into a raw mesh (fast if possible, else carefully).
 RawMesh read_off(std::string_view text, const std::string& name, const MeshImportOptions& options);
 RawMesh read_obj(std::string_view text, const std::string& name, const MeshImportOptions& options);

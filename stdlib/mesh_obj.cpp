@@ -218,9 +218,7 @@ RawMesh read_obj_careful(std::string_view text, const std::string& name, const M
 
 RawMesh mesh_detail::read_obj(std::string_view text, const std::string& name,
                               const MeshImportOptions& options) {
-  RawMesh raw;
-  if (!read_obj_fast(text, name, options, raw)) raw = read_obj_careful(text, name, options);
-  return raw;
+  return fast_or_careful(read_obj_fast, read_obj_careful, text, name, options);
 }
 
 ImportedMesh import_obj(std::string_view text, const std::string& name, const MeshImportOptions& options) {

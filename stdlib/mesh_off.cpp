@@ -207,9 +207,7 @@ RawMesh read_off_careful(std::string_view text, const std::string& name, const M
 
 RawMesh mesh_detail::read_off(std::string_view text, const std::string& name,
                               const MeshImportOptions& options) {
-  RawMesh raw;
-  if (!read_off_fast(text, name, options, raw)) raw = read_off_careful(text, name, options);
-  return raw;
+  return fast_or_careful(read_off_fast, read_off_careful, text, name, options);
 }
 
 ImportedMesh import_off(std::string_view text, const std::string& name, const MeshImportOptions& options) {
