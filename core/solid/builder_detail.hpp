@@ -32,6 +32,13 @@ class Diagnostics {
     out_.push_back({SolidDiagnostic::Severity::Warning, code, std::move(message), tag});
   }
   bool has_errors() const { return has_errors_; }
+  void append(std::vector<SolidDiagnostic>& more) {  // moves them in, in their order
+    for (SolidDiagnostic& d : more) {
+      has_errors_ = has_errors_ || d.severity == SolidDiagnostic::Severity::Error;
+      out_.push_back(std::move(d));
+    }
+    more.clear();
+  }
 
  private:
   std::vector<SolidDiagnostic>& out_;
@@ -100,7 +107,7 @@ struct Loops {
 // scale of its tolerances).
 struct FaceWork {
   Loops loops;
-  SmallVector<Ring, 1> rings;  // as Face::rings: moves into the solid
+  SmallVector<Ring, 1> rings;                              // as Face::rings: moves into the solid
   std::vector<std::pair<VertexIndex, VertexIndex>> lines;  // edges traversed both ways, lower index first
   bool rings_are_loops = false;                            // rings[k] == loops[k] for every k
   Plane plane;
@@ -185,9 +192,11 @@ class EdgeEntries {
   std::vector<Extra> extra_;
 };
 
-// Enters the edges of a valid face (edge_table.cpp): first-seen order from its cleaned loops, then its
-// ring traversals (filling each ring's `edges` with entry numbers) and on-face lines.
-void enter_face_edges(EdgeEntries& edges, FaceIndex face, FaceWork& work);
+// Enters the edges of a valid face (edge_table.cpp): first-seen order from its cleaned loops (null when
+// its rings are those loops), then its ring traversals (filling each ring's `edges` with entry numbers)
+// and on-face lines.
+void enter_face_edges(EdgeEntries& edges, FaceIndex face, SmallVector<Ring, 1>& rings, const Loops* loops,
+                      std::span<const std::pair<VertexIndex, VertexIndex>> lines);
 
 // Reports edges used by more than two faces.
 void report_non_manifold(const EdgeEntries& edges, Tags face_tags, const VertexTable& vertices,

@@ -75,25 +75,26 @@ std::string edge_name(const VertexTable& vertices, VertexIndex a, VertexIndex b)
   return vertices.id(std::min(a, b)) + "\u2013" + vertices.id(std::max(a, b));
 }
 
-void enter_face_edges(EdgeEntries& edges, FaceIndex face, FaceWork& work) {
+void enter_face_edges(EdgeEntries& edges, FaceIndex face, SmallVector<Ring, 1>& rings, const Loops* loops,
+                      std::span<const std::pair<VertexIndex, VertexIndex>> lines) {
   // Edges are entered in the order the input traverses them, rings and on-face lines interleaved; when
   // the rings are the input loops as given, one pass does both.
-  if (!work.rings_are_loops)
-    for (std::size_t k = 0; k < work.loops.size(); ++k) {
-      const std::span<const VertexIndex> loop = work.loops[k];
-      for (std::size_t i = 0; i < loop.size(); ++i) edges.get(loop[i], loop[(i + 1) % loop.size()]);
+  if (loops)
+    for (std::size_t k = 0; k < loops->size(); ++k) {
+      const std::span<const VertexIndex> loop = (*loops)[k];
+      for (std::size_t i = 0; i < loop.size(); ++i) edges.get(loop[i], loop[i + 1 < loop.size() ? i + 1 : 0]);
     }
-  for (Ring& r : work.rings) {
+  for (Ring& r : rings) {
     const std::size_t n = r.vertices.size();
     r.edges.assign(n, kNoEdge);
     for (std::size_t i = 0; i < n; ++i) {
-      const VertexIndex a = r.vertices[i], b = r.vertices[(i + 1) % n];
+      const VertexIndex a = r.vertices[i], b = r.vertices[i + 1 < n ? i + 1 : 0];
       const std::uint32_t e = edges.get(a, b);
       edges.add_use(e, {face, a < b});
       r.edges[i] = e;  // an entry number until build_edge_table
     }
   }
-  for (const auto& [a, b] : work.lines) {
+  for (const auto& [a, b] : lines) {
     EdgeEntry& e = edges[edges.get(a, b)];
     if (e.marking_face == kNoFace) e.marking_face = face;
   }

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "core/parallel.hpp"
 #include "core/solid/builder_detail.hpp"
 
 namespace hlr {
@@ -135,71 +136,102 @@ SolidBuildResult SolidBuilder::build() const {
   VertexTable vertices = resolve_vertices(positions_, Tags{vertex_tags_}, vertex_ids_, ids_,
                                           label_ ? &label_ : nullptr, diagnostics);
 
-  // Faces one at a time: resolve the references, prepare, enter the edges; the rings go straight into
-  // the solid. Faces keep their input positions (invalid ones stay empty; they always come with an error).
+  // Faces are prepared in parallel chunks (resolve the references, clean, split, fit the plane; the rings
+  // go straight into the solid), each chunk with its own diagnostics, joined in face order; then their
+  // edges are entered in face order, which numbers them. Faces keep their input positions (invalid ones
+  // stay empty; they always come with an error).
   const std::size_t n = face_ends_.size();
   const Tags face_tags{face_tags_};
   Solid solid;
   solid.faces.resize(n);
   solid.planes.resize(n);
-  std::vector<bool> valid(n, false);
+  std::vector<char> ready(n, 0);  // valid; chars, so that chunks may write side by side
+  std::vector<char> plain(n, 1);  // its rings are its cleaned loops and it has no on-face lines
   std::vector<Vector3> areas(n);
-  std::vector<double> sizes(lines_.empty() ? 0 : n);    // only add_line needs them
-  EdgeEntries edges(refs_.size() / 2 + lines_.size());  // a closed surface names each edge twice
-  FaceWork work;
-  std::vector<std::string> unknown;
-  // The outer ring's edges of face g, asked for ahead of their lookups (EdgeEntries::prefetch).
-  constexpr std::size_t kAhead = 8;
-  auto prefetch_edges = [&](std::size_t g) {
-    const std::size_t r = g == 0 ? 0 : face_ends_[g - 1];
-    if (r == face_ends_[g]) return;
-    const std::size_t begin = r == 0 ? 0 : ring_ends_[r - 1], end = ring_ends_[r];
-    if (begin == end || end - begin > kAhead) return;
-    VertexIndex previous = vertices.resolve(refs_[end - 1]);
-    for (std::size_t k = begin; k < end; ++k) {
-      const VertexIndex v = vertices.resolve(refs_[k]);
-      if (v < vertices.usable.size() && previous < vertices.usable.size()) edges.prefetch(previous, v);
-      previous = v;
-    }
+  std::vector<double> sizes(lines_.empty() ? 0 : n);  // only add_line needs them
+  struct Chunk {
+    std::vector<SolidDiagnostic> diagnostics;
+    // Faces whose edges are not entered from their rings alone: their cleaned loops and on-face lines.
+    std::vector<std::uint32_t> faces;
+    std::vector<Loops> loops;
+    std::vector<std::vector<std::pair<VertexIndex, VertexIndex>>> lines;
   };
-  for (std::size_t f = 0; f < n; ++f) {
-    if (f + kAhead < n) prefetch_edges(f + kAhead);
-    // Resolve ids; name each unknown id once.
-    work.loops.clear();
-    unknown.clear();
-    bool resolved = true;
-    for (std::size_t r = f == 0 ? 0 : face_ends_[f - 1]; r < face_ends_[f]; ++r) {
-      for (std::size_t k = r == 0 ? 0 : ring_ends_[r - 1]; k < ring_ends_[r]; ++k) {
-        const VertexIndex v = vertices.resolve(refs_[k]);
-        if (v == kNoVertex) {
-          resolved = false;
-          std::string id = vertices.ref_text(refs_[k]);
-          if (std::find(unknown.begin(), unknown.end(), id) == unknown.end()) {
-            diagnostics.error("unknown-vertex",
-                              "face " + std::to_string(f + 1) + " names vertex '" + id +
-                                  "' which is not declared; declare it with 'vertex " + id +
-                                  " = (x, y, z)' before the face",
-                              face_tags[f]);
-            unknown.push_back(std::move(id));
+  constexpr std::size_t kChunkFaces = 2048;
+  std::vector<Chunk> chunks((n + kChunkFaces - 1) / kChunkFaces);
+  parallel_chunks(chunks.size(), threads_for(n, 4096, 0), [&](std::size_t k) {
+    Chunk& chunk = chunks[k];
+    Diagnostics found(chunk.diagnostics);
+    FaceWork work;
+    std::vector<std::string> unknown;
+    for (std::size_t f = k * kChunkFaces; f < std::min(n, (k + 1) * kChunkFaces); ++f) {
+      // Resolve ids; name each unknown id once.
+      work.loops.clear();
+      unknown.clear();
+      bool resolved = true;
+      for (std::size_t r = f == 0 ? 0 : face_ends_[f - 1]; r < face_ends_[f]; ++r) {
+        for (std::size_t i = r == 0 ? 0 : ring_ends_[r - 1]; i < ring_ends_[r]; ++i) {
+          const VertexIndex v = vertices.resolve(refs_[i]);
+          if (v == kNoVertex) {
+            resolved = false;
+            std::string id = vertices.ref_text(refs_[i]);
+            if (std::find(unknown.begin(), unknown.end(), id) == unknown.end()) {
+              found.error("unknown-vertex",
+                          "face " + std::to_string(f + 1) + " names vertex '" + id +
+                              "' which is not declared; declare it with 'vertex " + id +
+                              " = (x, y, z)' before the face",
+                          face_tags[f]);
+              unknown.push_back(std::move(id));
+            }
+            continue;
           }
-          continue;
+          if (!vertices.usable[v]) resolved = false;  // non-finite: reported with the vertex
+          work.loops.vertices.push_back(v);
         }
-        if (!vertices.usable[v]) resolved = false;  // non-finite: reported with the vertex
-        work.loops.vertices.push_back(v);
+        work.loops.close();
       }
-      work.loops.close();
+      if (!resolved) continue;
+      if (work.loops.size() == 0) work.loops.close();  // no rings at all: one empty ring
+      if (!prepare_face(work, face_is_loop_[f], static_cast<int>(f + 1), face_tags[f], vertices, options,
+                        found))
+        continue;
+      ready[f] = 1;
+      solid.planes[f] = work.plane;
+      areas[f] = work.area;
+      if (!sizes.empty()) sizes[f] = work.size;
+      solid.faces[f].rings = std::move(work.rings);
+      if (!work.rings_are_loops || !work.lines.empty()) {
+        plain[f] = 0;
+        chunk.faces.push_back(static_cast<std::uint32_t>(f));
+        chunk.loops.push_back(work.rings_are_loops ? Loops{} : work.loops);
+        chunk.lines.push_back(work.lines);
+      }
     }
-    if (!resolved) continue;
-    if (work.loops.size() == 0) work.loops.close();  // no rings at all: one empty ring
-    if (!prepare_face(work, face_is_loop_[f], static_cast<int>(f + 1), face_tags[f], vertices, options,
-                      diagnostics))
-      continue;
-    valid[f] = true;
-    solid.planes[f] = work.plane;
-    areas[f] = work.area;
-    if (!sizes.empty()) sizes[f] = work.size;
-    enter_face_edges(edges, static_cast<FaceIndex>(f), work);
-    solid.faces[f].rings = std::move(work.rings);
+  });
+
+  std::vector<bool> valid(ready.begin(), ready.end());
+  EdgeEntries edges(refs_.size() / 2 + lines_.size());  // a closed surface names each edge twice
+  constexpr std::size_t kAhead = 8;  // faces whose edges are asked for ahead (EdgeEntries::prefetch)
+  for (std::size_t k = 0; k < chunks.size(); ++k) {
+    Chunk& chunk = chunks[k];
+    diagnostics.append(chunk.diagnostics);
+    std::size_t special = 0;
+    for (std::size_t f = k * kChunkFaces; f < std::min(n, (k + 1) * kChunkFaces); ++f) {
+      if (f + kAhead < n && ready[f + kAhead]) {
+        const auto& ring = solid.faces[f + kAhead].rings[0].vertices;
+        for (std::size_t i = 0; i < ring.size() && ring.size() <= kAhead; ++i)
+          edges.prefetch(ring[i], ring[i + 1 < ring.size() ? i + 1 : 0]);
+      }
+      if (!ready[f]) continue;
+      if (plain[f]) {
+        enter_face_edges(edges, static_cast<FaceIndex>(f), solid.faces[f].rings, nullptr, {});
+        continue;
+      }
+      const Loops& loops = chunk.loops[special];
+      enter_face_edges(edges, static_cast<FaceIndex>(f), solid.faces[f].rings,
+                       loops.size() ? &loops : nullptr, chunk.lines[special]);
+      ++special;
+    }
+    chunk = Chunk{};
   }
   report_non_manifold(edges, face_tags, vertices, diagnostics);
   if (lines_.empty()) edges.release_index();  // only add_line looks edges up again
