@@ -1,22 +1,27 @@
 // HLRBRep_PolyAlgo on the solid's own faces. The shape: one planar TopoDS_Face per face of the solid,
 // sharing one TopoDS_Edge per solid edge and one TopoDS_Vertex per solid vertex (built directly, so no
 // sewing tolerance is involved), in a closed shell and a solid. Each edge the solid classifies Smooth or
-// Flat (dihedral angle below the crease angle) is marked G1 between its two faces — what
-// BRepLib::EncodeRegularity would find with the crease angle as its tolerance — so OCCT calls it a
-// smooth (Rg1) edge; every other edge stays C0, a sharp edge. BRepMesh then triangulates the planar
-// faces (exactly: no deflection is involved), which HLRBRep_PolyAlgo needs.
+// Flat (dihedral angle below the crease angle) is marked G1 between its two faces by
+// BRepLib::EncodeRegularity with the crease angle as its tolerance, so OCCT calls it a smooth (Rg1)
+// edge; every other edge stays C0, a sharp edge. BRepMesh then triangulates the planar faces (exactly:
+// no deflection is involved), which HLRBRep_PolyAlgo needs.
 #include "bench/peers/occt_peer.hpp"
 
 #include <BRepAdaptor_Curve.hxx>
 #include <BRepBuilderAPI_MakeEdge.hxx>
 #include <BRepBuilderAPI_MakeFace.hxx>
 #include <BRepMesh_IncrementalMesh.hxx>
-#include <BRep_Builder.hxx>
+#include <BRepBuilderAPI_MakeVertex.hxx>
+#include <BRepLib.hxx>
+#include <HLRAlgo_BiPoint.hxx>
+#include <HLRAlgo_EdgeIterator.hxx>
+#include <HLRAlgo_EdgeStatus.hxx>
 #include <HLRAlgo_Projector.hxx>
 #include <HLRBRep_PolyAlgo.hxx>
 #include <HLRBRep_PolyHLRToShape.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
+#include <TopoDS_Builder.hxx>
 #include <TopoDS_Compound.hxx>
 #include <TopoDS_Edge.hxx>
 #include <TopoDS_Face.hxx>
@@ -30,6 +35,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <numbers>
 #include <stdexcept>
 #include <vector>
 
@@ -50,9 +56,12 @@ double median(std::vector<double> v) {
 gp_Pnt to_gp(Point3 p) { return {p.x, p.y, p.z}; }
 
 TopoDS_Shape build_shape(const Solid& solid) {
-  BRep_Builder b;
+  // (TopoDS_Builder, not BRep_Builder: Debian's libocct-foundation-dev 7.6.3 lacks
+  // NCollection_AliasedArray.hxx, which BRep_Builder.hxx and BRep_Tool.hxx include.)
+  TopoDS_Builder b;
   std::vector<TopoDS_Vertex> vertices(solid.vertices.size());
-  for (std::size_t i = 0; i < vertices.size(); ++i) b.MakeVertex(vertices[i], to_gp(solid.vertices[i]), 1e-7);
+  for (std::size_t i = 0; i < vertices.size(); ++i)
+    vertices[i] = BRepBuilderAPI_MakeVertex(to_gp(solid.vertices[i])).Vertex();
 
   std::vector<TopoDS_Edge> edges(solid.edges.size());
   for (std::size_t i = 0; i < edges.size(); ++i) {
@@ -88,11 +97,14 @@ TopoDS_Shape build_shape(const Solid& solid) {
     faces[f] = make.Face();
     b.Add(shell, faces[f]);
   }
+  // Only the edges we call Smooth or Flat are offered to EncodeRegularity, with the crease angle (a
+  // hair above, for ties) as its angular tolerance: it marks G1 where the faces' normals differ by less.
+  const double tol_ang = std::max(1e-10, solid.crease_angle_deg * std::numbers::pi / 180 + 1e-9);
   for (std::size_t i = 0; i < edges.size(); ++i) {
     const SolidEdge& e = solid.edges[i];
     if ((e.kind == EdgeKind::Smooth || e.kind == EdgeKind::Flat) && e.left != kNoFace && e.right != kNoFace)
-      b.Continuity(edges[i], faces[static_cast<std::size_t>(e.left)], faces[static_cast<std::size_t>(e.right)],
-                   GeomAbs_G1);
+      BRepLib::EncodeRegularity(edges[i], faces[static_cast<std::size_t>(e.left)],
+                                faces[static_cast<std::size_t>(e.right)], tol_ang);
   }
   shell.Closed(solid.closed);
   TopoDS_Shape shape = shell;
@@ -152,7 +164,10 @@ Projection make_projection(const Solid& solid, const Camera& camera) {
   return p;
 }
 
-// Sum of the 2-D lengths of a compound's edges (straight segments from the polygonal algorithm).
+// Sum of the 2-D lengths of a compound's edges (straight segments from the polygonal algorithm). Note
+// that HLRBRep_PolyHLRToShape places the pieces in the projector's frame without the perspective
+// division (it applies the visibility parameters to the transformed 3-D end points): under a
+// perspective projector its compounds are not the picture the hiding was done in.
 double picture_length(const TopoDS_Shape& compound, double scale, std::size_t& count) {
   double length = 0;
   if (compound.IsNull()) return 0;
@@ -167,37 +182,74 @@ double picture_length(const TopoDS_Shape& compound, double scale, std::size_t& c
 
 }  // namespace
 
-OcctResult run_occt(const Solid& solid, const Camera& camera, int runs) {
+OcctResult run_occt(const Solid& solid, const Camera& camera, int runs, double budget_s, bool to_shape,
+                    double tol_angular) {
   OcctResult r;
   auto t0 = std::chrono::steady_clock::now();
   const TopoDS_Shape shape = build_shape(solid);
   r.build_s = seconds_since(t0);
   const Projection proj = make_projection(solid, camera);
 
-  std::vector<double> hide_times, extract_times;
-  for (int run = 0; run < std::max(1, runs); ++run) {
+  std::vector<double> hide_times;
+  double spent = 0;
+  for (int run = 0; run < std::max(1, runs) && spent < budget_s; ++run) {
     t0 = std::chrono::steady_clock::now();
     Handle(HLRBRep_PolyAlgo) algo = new HLRBRep_PolyAlgo();
     algo->Load(shape);
     algo->Projector(proj.projector);
+    if (tol_angular > 0) algo->TolAngular(tol_angular);
     algo->Update();
+    // Hide() hides each edge when it is asked for (HLRAlgo_PolyAlgo works lazily), so the loop is
+    // part of the hiding. The visibility parameters run along the projected segment PntP1 → PntP2
+    // (perspective already divided), so the pieces are measured there.
+    double compared = 0, smooth = 0;
+    std::size_t pieces = 0;
+    TopoDS_Shape edge_shape;
+    Standard_Boolean reg1 = false, regn = false, outl = false, intl = false;
+    HLRAlgo_EdgeStatus status;
+    HLRAlgo_EdgeIterator it;
+    for (algo->InitHide(); algo->MoreHide(); algo->NextHide()) {
+      const HLRAlgo_BiPoint::PointsT& points = algo->Hide(status, edge_shape, reg1, regn, outl, intl);
+      const gp_XY a = points.PntP12D(), d = points.PntP22D() - a;
+      const double span = proj.scale * d.Modulus();
+      double visible = 0;
+      Standard_Real start = 0, end = 0;
+      Standard_ShortReal tol_start = 0, tol_end = 0;
+      for (it.InitVisible(status); it.MoreVisible(); it.NextVisible()) {
+        it.Visible(start, tol_start, end, tol_end);
+        visible += (end - start) * span;
+        ++pieces;
+      }
+      // HLRBRep_PolyHLRToShape's classes: VCompound = !(intl || (reg1 && !outl)), OutLineVCompound =
+      // intl, Rg1LineVCompound = reg1 && !regn && !outl.
+      if (intl || !(reg1 && !outl))
+        compared += visible;
+      else if (reg1 && !regn)
+        smooth += visible;
+    }
     hide_times.push_back(seconds_since(t0));
-
-    t0 = std::chrono::steady_clock::now();
-    HLRBRep_PolyHLRToShape to_shape;
-    to_shape.Update(algo);
-    const TopoDS_Shape sharp = to_shape.VCompound(), outline = to_shape.OutLineVCompound(),
-                       smooth = to_shape.Rg1LineVCompound();
-    extract_times.push_back(seconds_since(t0));
-
-    r.visible_edges = 0;
-    r.visible_length = picture_length(sharp, proj.scale, r.visible_edges) +
-                       picture_length(outline, proj.scale, r.visible_edges);
-    std::size_t ignored = 0;
-    r.smooth_visible_length = picture_length(smooth, proj.scale, ignored);
+    spent += hide_times.back();
+    r.visible_length = compared;
+    r.smooth_visible_length = smooth;
+    r.visible_pieces = pieces;
   }
+  r.runs = static_cast<int>(hide_times.size());
   r.hide_s = median(hide_times);
-  r.extract_s = median(extract_times);
+
+  if (to_shape) {
+    t0 = std::chrono::steady_clock::now();
+    Handle(HLRBRep_PolyAlgo) algo = new HLRBRep_PolyAlgo();
+    algo->Load(shape);
+    algo->Projector(proj.projector);
+    if (tol_angular > 0) algo->TolAngular(tol_angular);
+    algo->Update();
+    HLRBRep_PolyHLRToShape extract;
+    extract.Update(algo);
+    const TopoDS_Shape sharp = extract.VCompound(), outline = extract.OutLineVCompound();
+    r.to_shape_s = seconds_since(t0);
+    std::size_t edges = 0;
+    r.to_shape_length = picture_length(sharp, proj.scale, edges) + picture_length(outline, proj.scale, edges);
+  }
   return r;
 }
 
