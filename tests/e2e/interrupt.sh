@@ -42,9 +42,11 @@ check_stopped() {  # check_stopped DIR STATUS STDERR_FILE: what a stopped run mu
   diff -r "$work/whole" "$dir" >/dev/null || { echo "the kept frames and the hinted rest are not the sequence"; exit 1; }
 }
 
-# Ctrl-C in a terminal (stderr to a file, to read the closing line whole).
+# Ctrl-C in a terminal (stderr to a file, to read the closing line whole). Each part has a session of its
+# own, all left open until the end: killing the server's last session makes it exit, and a new session
+# asked for while it exits fails ("server exited unexpectedly").
 mkdir -p "$work/tty"
-session=interrupt
+session=interrupt-tty
 socket=$work/tmux.socket  # a server of its own, so other tests' sessions are never touched
 tm() { tmux -S "$socket" "$@"; }
 tm new-session -d -s "$session" -x 160 -y 20 \
@@ -55,10 +57,10 @@ tm send-keys -t "$session" C-c
 for _ in $(seq 300); do [ -s "$work/tty.status" ] && break; sleep 0.1; done
 [ -s "$work/tty.status" ] || { echo "Ctrl-C did not stop the render within 30 s"; exit 1; }
 check_stopped "$work/tty" "$(cat "$work/tty.status")" "$work/tty.err"
-tm kill-session -t "$session"
 
 # The progress line, on a terminal's stderr.
 mkdir -p "$work/progress"
+session=interrupt-progress
 tm new-session -d -s "$session" -x 160 -y 20 \
   "cd '$work/progress' && '${render[0]}' '$scene' --frames 0-$last --jobs 1 -o 'f-{frame:03}.png'; echo status \$?; sleep 60"
 progress="frame [0-9]+/$((last + 1)), [0-9.]+ frames/s, [0-9]+ s left"
@@ -68,7 +70,6 @@ tm capture-pane -p -t "$session" | grep -Eq "$progress" ||
 tm send-keys -t "$session" C-c
 for _ in $(seq 300); do tm capture-pane -p -t "$session" | grep -q '^status' && break; sleep 0.1; done
 tm capture-pane -p -t "$session" | grep -q '^status 130' || { echo "Ctrl-C on the terminal: no exit 130"; tm capture-pane -p -t "$session"; exit 1; }
-tm kill-session -t "$session"
 
 # SIGTERM, as Slurm and Kubernetes send it, with stderr a file: no progress line there.
 mkdir -p "$work/term"

@@ -26,6 +26,9 @@ expect() {
 }
 keys() { tmux -S "$socket" send-keys -t "$session" "$@"; }
 
+# A session that outlives the REPL's: a server whose last session ends exits, and a new session asked for
+# while it exits fails ("server exited unexpectedly").
+tmux -S "$socket" new-session -d -s keep "sleep 600"
 tmux -S "$socket" new-session -d -s "$session" -x 100 -y 40 -c "$work" "$hlrscript"
 expect "hls>"
 keys 'draw cub' Tab
