@@ -96,10 +96,6 @@ class SmallVector {
   const_reverse_iterator rend() const noexcept { return const_reverse_iterator(begin()); }
   T& operator[](size_type i) { return data_[i]; }
   const T& operator[](size_type i) const { return data_[i]; }
-  T& at(size_type i) {
-    if (i >= size_) throw std::out_of_range("SmallVector::at");
-    return data_[i];
-  }
   const T& at(size_type i) const {
     if (i >= size_) throw std::out_of_range("SmallVector::at");
     return data_[i];
@@ -112,7 +108,6 @@ class SmallVector {
   void reserve(size_type n) {
     if (n > capacity_) reallocate(n);
   }
-  void shrink_to_fit() {}  // the inline room is there anyway; a heap block is kept as it is
   void clear() noexcept {
     std::destroy(begin(), end());
     size_ = 0;

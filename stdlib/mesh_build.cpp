@@ -117,7 +117,6 @@ class Builder {
     out_ends_.reserve(n);
     out_raw_.reserve(n);
     seen_ = FaceCycleSet(n);
-    constexpr std::size_t kAhead = 16;  // faces whose slot is asked for ahead of its lookup
     for (std::size_t f = 0; f < n; ++f) {
       if (f + kAhead < n) prefetch_cycle(f + kAhead);
       add_face(f);
@@ -355,19 +354,22 @@ class Builder {
   }
 
   // The slot of face g's cycle, asked for ahead of its lookup: the lookups of a large table then do not
-  // wait on memory one after another.
+  // wait on memory one after another. The hash is kept for is_duplicate, which would compute the same.
   void prefetch_cycle(std::size_t g) {
     std::uint32_t ignored = 0;
     clean_ring(g, other_, ignored);
     if (other_.empty()) return;
     canonical_cycle(other_, other_key_);
-    seen_.prefetch(cycle_hash(other_key_));
+    const std::uint64_t h = cycle_hash(other_key_);
+    ahead_[g % kAhead] = {g, h};
+    seen_.prefetch(h);
   }
 
   // A face with the same cycle of vertices as an earlier one (either direction) is dropped.
   bool is_duplicate(const std::vector<std::uint32_t>& ring, std::size_t f) {
     canonical_cycle(ring, key_);
-    const std::uint64_t h = cycle_hash(key_);
+    const AheadHash& kept = ahead_[f % kAhead];
+    const std::uint64_t h = kept.face == f ? kept.hash : cycle_hash(key_);
     // A fingerprint match is checked against the earlier face's own cycle: equal cycles, not equal hashes.
     const std::size_t earlier = seen_.insert(h, f, [&](std::size_t e) {
       std::uint32_t ignored = 0;
@@ -567,7 +569,13 @@ class Builder {
   std::vector<std::size_t> out_ends_;
   std::vector<std::size_t> out_raw_;
   std::vector<BuiltLine> lines_;
-  FaceCycleSet seen_;  // cycle of a kept face → its file face
+  FaceCycleSet seen_;                        // cycle of a kept face → its file face
+  static constexpr std::size_t kAhead = 16;  // faces whose slot is asked for ahead of its lookup
+  struct AheadHash {
+    std::size_t face = ~std::size_t{0};
+    std::uint64_t hash = 0;
+  };
+  AheadHash ahead_[kAhead];  // the hashes prefetch_cycle found, by face modulo kAhead
   // One face's ring and buffers, reused.
   std::vector<std::uint32_t> ring_, scratch_, key_, other_, other_key_;
   std::int64_t budget_ = kTriangulationBudget;

@@ -10,9 +10,9 @@
 #include <BRepAdaptor_Curve.hxx>
 #include <BRepBuilderAPI_MakeEdge.hxx>
 #include <BRepBuilderAPI_MakeFace.hxx>
-#include <BRepMesh_IncrementalMesh.hxx>
 #include <BRepBuilderAPI_MakeVertex.hxx>
 #include <BRepLib.hxx>
+#include <BRepMesh_IncrementalMesh.hxx>
 #include <HLRAlgo_BiPoint.hxx>
 #include <HLRAlgo_EdgeIterator.hxx>
 #include <HLRAlgo_EdgeStatus.hxx>
@@ -29,15 +29,16 @@
 #include <TopoDS_Solid.hxx>
 #include <TopoDS_Vertex.hxx>
 #include <TopoDS_Wire.hxx>
-#include <gp_Ax2.hxx>
-#include <gp_Pln.hxx>
-
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <gp_Ax2.hxx>
+#include <gp_Pln.hxx>
 #include <numbers>
 #include <stdexcept>
 #include <vector>
+
+#include "core/tolerance.hpp"
 
 namespace hlr::peers {
 
@@ -97,9 +98,10 @@ TopoDS_Shape build_shape(const Solid& solid) {
     faces[f] = make.Face();
     b.Add(shell, faces[f]);
   }
-  // Only the edges we call Smooth or Flat are offered to EncodeRegularity, with the crease angle (a
-  // hair above, for ties) as its angular tolerance: it marks G1 where the faces' normals differ by less.
-  const double tol_ang = std::max(1e-10, solid.crease_angle_deg * std::numbers::pi / 180 + 1e-9);
+  // Only the edges we call Smooth or Flat are offered to EncodeRegularity, with the crease angle widened
+  // by our coplanar angle as its angular tolerance: Flat edges bend by less than the latter, Smooth ones
+  // by at most the former, and it marks G1 where the faces' normals differ by less.
+  const double tol_ang = solid.crease_angle_deg * std::numbers::pi / 180 + Tolerance::kCoplanarAngle;
   for (std::size_t i = 0; i < edges.size(); ++i) {
     const SolidEdge& e = solid.edges[i];
     if ((e.kind == EdgeKind::Smooth || e.kind == EdgeKind::Flat) && e.left != kNoFace && e.right != kNoFace)
@@ -114,8 +116,9 @@ TopoDS_Shape build_shape(const Solid& solid) {
     b.Add(s, shell);
     shape = s;
   }
-  // Planar faces bounded by straight edges: the triangulation is exact whatever the deflection.
-  BRepMesh_IncrementalMesh mesh(shape, 1e-3, false, 0.5, false);
+  // Planar faces bounded by straight edges: the triangulation is exact whatever the deflection, so any
+  // positive one does (our planarity tolerance, relative to the faces' size).
+  BRepMesh_IncrementalMesh mesh(shape, Tolerance::kPlanarity, true, 0.5, false);
   if (!mesh.IsDone()) throw std::runtime_error("occt peer: BRepMesh failed");
   return shape;
 }
@@ -125,17 +128,18 @@ TopoDS_Shape build_shape(const Solid& solid) {
 // depth = focus − Z, so our picture = (focal/focus)·OCCT's picture + offset.
 struct Projection {
   HLRAlgo_Projector projector;
-  double scale = 1;    // OCCT picture → ours
-  Vector2 shift{};     // added after scaling
+  double scale = 1;  // OCCT picture → ours
+  Vector2 shift{};   // added after scaling
 };
 
 Projection make_projection(const Solid& solid, const Camera& camera) {
   const auto& m = camera.viewFromWorld.m;
-  const Vector3 right{m[0][0], m[0][1], m[0][2]}, up{m[1][0], m[1][1], m[1][2]}, fwd{m[2][0], m[2][1], m[2][2]};
-  const double tol = 1e-9;
+  const Vector3 right{m[0][0], m[0][1], m[0][2]}, up{m[1][0], m[1][1], m[1][2]},
+      fwd{m[2][0], m[2][1], m[2][2]};
+  const double tol = Tolerance::kRelative;
   if (std::abs(dot(right, right) - 1) > tol || std::abs(dot(up, up) - 1) > tol ||
-      std::abs(dot(fwd, fwd) - 1) > tol || std::abs(dot(right, up)) > tol || std::abs(dot(right, fwd)) > tol ||
-      std::abs(dot(up, fwd)) > tol || dot(cross(right, up), fwd) > 0)
+      std::abs(dot(fwd, fwd) - 1) > tol || std::abs(dot(right, up)) > tol ||
+      std::abs(dot(right, fwd)) > tol || std::abs(dot(up, fwd)) > tol || dot(cross(right, up), fwd) > 0)
     throw std::runtime_error("occt peer: the camera's view axes are not a right-handed orthonormal frame");
   // Focus: the depth of the solid's centre, so OCCT's picture plane passes through the object.
   Point3 lo = solid.vertices.front(), hi = lo;
@@ -150,14 +154,15 @@ Projection make_projection(const Solid& solid, const Camera& camera) {
     const double focus = camera.view(centre).z;
     if (!(focus > 0)) throw std::runtime_error("occt peer: the solid's centre is behind the eye");
     const Point3 origin = eye + focus * fwd;
-    p.projector = HLRAlgo_Projector(gp_Ax2(to_gp(origin), gp_Dir(-fwd.x, -fwd.y, -fwd.z), gp_Dir(right.x, right.y, right.z)),
-                                    focus);
+    p.projector = HLRAlgo_Projector(
+        gp_Ax2(to_gp(origin), gp_Dir(-fwd.x, -fwd.y, -fwd.z), gp_Dir(right.x, right.y, right.z)), focus);
     p.scale = camera.focal / focus;
     p.shift = camera.offset;
   } else {
     const Point3 v = camera.view(centre);
     const Point3 origin = centre;  // view (x, y) of the origin is added back
-    p.projector = HLRAlgo_Projector(gp_Ax2(to_gp(origin), gp_Dir(-fwd.x, -fwd.y, -fwd.z), gp_Dir(right.x, right.y, right.z)));
+    p.projector = HLRAlgo_Projector(
+        gp_Ax2(to_gp(origin), gp_Dir(-fwd.x, -fwd.y, -fwd.z), gp_Dir(right.x, right.y, right.z)));
     p.scale = camera.focal;
     p.shift = {camera.offset.x + camera.focal * v.x, camera.offset.y + camera.focal * v.y};
   }
@@ -182,6 +187,17 @@ double picture_length(const TopoDS_Shape& compound, double scale, std::size_t& c
 
 }  // namespace
 
+// The polyhedral algorithm with the shape and projector loaded and Update() run (the hiding itself waits
+// for Hide()); tol_angular ≤ 0 keeps OCCT's default.
+Handle(HLRBRep_PolyAlgo) updated_algo(const TopoDS_Shape& shape, const Projection& proj, double tol_angular) {
+  Handle(HLRBRep_PolyAlgo) algo = new HLRBRep_PolyAlgo();
+  algo->Load(shape);
+  algo->Projector(proj.projector);
+  if (tol_angular > 0) algo->TolAngular(tol_angular);
+  algo->Update();
+  return algo;
+}
+
 OcctResult run_occt(const Solid& solid, const Camera& camera, int runs, double budget_s, bool to_shape,
                     double tol_angular) {
   OcctResult r;
@@ -194,11 +210,7 @@ OcctResult run_occt(const Solid& solid, const Camera& camera, int runs, double b
   double spent = 0;
   for (int run = 0; run < std::max(1, runs) && spent < budget_s; ++run) {
     t0 = std::chrono::steady_clock::now();
-    Handle(HLRBRep_PolyAlgo) algo = new HLRBRep_PolyAlgo();
-    algo->Load(shape);
-    algo->Projector(proj.projector);
-    if (tol_angular > 0) algo->TolAngular(tol_angular);
-    algo->Update();
+    Handle(HLRBRep_PolyAlgo) algo = updated_algo(shape, proj, tol_angular);
     // Hide() hides each edge when it is asked for (HLRAlgo_PolyAlgo works lazily), so the loop is
     // part of the hiding. The visibility parameters run along the projected segment PntP1 → PntP2
     // (perspective already divided), so the pieces are measured there.
@@ -238,11 +250,7 @@ OcctResult run_occt(const Solid& solid, const Camera& camera, int runs, double b
 
   if (to_shape) {
     t0 = std::chrono::steady_clock::now();
-    Handle(HLRBRep_PolyAlgo) algo = new HLRBRep_PolyAlgo();
-    algo->Load(shape);
-    algo->Projector(proj.projector);
-    if (tol_angular > 0) algo->TolAngular(tol_angular);
-    algo->Update();
+    Handle(HLRBRep_PolyAlgo) algo = updated_algo(shape, proj, tol_angular);
     HLRBRep_PolyHLRToShape extract;
     extract.Update(algo);
     const TopoDS_Shape sharp = extract.VCompound(), outline = extract.OutLineVCompound();

@@ -57,8 +57,8 @@ bool sketch_available() { return std::system("command -v sketch >/dev/null 2>&1"
 SketchResult run_sketch(const std::filesystem::path& input, bool bsp, int runs, double limit_s) {
   std::filesystem::path output = input;
   output.replace_extension(".tex");
-  const std::string command = "timeout " + num(std::ceil(limit_s)) + " sketch " + (bsp ? "-b " : "") + "-o '" +
-                              output.string() + "' '" + input.string() + "' >/dev/null 2>&1";
+  const std::string command = "timeout " + num(std::ceil(limit_s)) + " sketch " + (bsp ? "-b " : "") +
+                              "-o '" + output.string() + "' '" + input.string() + "' >/dev/null 2>&1";
   SketchResult r;
   std::vector<double> times;
   for (int run = 0; run < std::max(1, runs); ++run) {
