@@ -172,7 +172,7 @@ void resolve_device(const FrameScene& scene, const RunSettings& run, FrameSettin
   plot.plan.grid_mm = planning.grid_mm;
   plot.plan.home = planning.home;
   plot.plan.speeds = planning.speeds;
-  // The greedy plan an optimized one must beat is built beside it, as a task of the frame's arena: an
+  // The greedy plan a small optimized one must beat is built beside it, as a task of the frame's arena: an
   // idle core takes it, a busy arena runs it in turn (the plan is the same either way).
   plot.plan.threads = 2;
   plot.object_pens = scene.object_pens;

@@ -231,20 +231,25 @@ PenPlan plan_pen_strokes(const std::vector<PlotPiece>& pieces, const PlanOptions
         std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double, std::milli>(budget_ms));
     Sequence chosen;
     if (options.order == PenOrder::Optimized) {
-      // The greedy plan, for the never-worse-than-Greedy guarantee: built beside the optimized one when
-      // allowed (as a task of the caller's arena).
+      // The greedy plan, for the never-worse-than-Greedy guarantee on small drawings (where the matching
+      // and the local search have least to work with): built beside the optimized one when allowed (as a
+      // task of the caller's arena).
       Sequence optimized;
-      auto greedy = [&] { chosen = plan_sequence(groups, home, false, budget); };
       auto best = [&] { optimized = plan_sequence(groups, home, true, budget); };
-      if (options.threads >= 2) {
-        tbb::parallel_invoke(greedy, best);
+      if (st.merged_pieces <= kGreedyCheckEdges) {
+        auto greedy = [&] { chosen = plan_sequence(groups, home, false, budget); };
+        if (options.threads >= 2) {
+          tbb::parallel_invoke(greedy, best);
+        } else {
+          greedy();
+          best();
+        }
       } else {
-        greedy();
         best();
       }
       st.improvement_moves = optimized.moves;
       st.budget_exhausted = optimized.deadline_hit;
-      if (optimized.travel <= chosen.travel)
+      if (st.merged_pieces > kGreedyCheckEdges || optimized.travel <= chosen.travel)
         chosen = std::move(optimized);
       else
         st.kept_greedy = true;

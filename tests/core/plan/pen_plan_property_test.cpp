@@ -1,7 +1,7 @@
 // Properties of plan_pen_strokes() on seeded random drawings and on hidden-line output: every merged piece
 // drawn exactly once (multisets of unit lattice steps), lifts equal to the lower bound, statistics that
-// recompute, Optimized never worse than Greedy, determinism; and the brute-force optimum on small
-// instances.
+// recompute, Optimized never worse than Greedy (guaranteed on small drawings, observed on the larger ones),
+// determinism; and the brute-force optimum on small instances.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -251,6 +251,8 @@ void check_properties(const std::vector<PlotPiece>& pieces, double grid, Point2 
         EXPECT_FALSE(plan.stats.budget_exhausted);
       }
     }
+    // Guaranteed up to kGreedyCheckEdges (the greedy plan is the fallback); beyond, measured on every
+    // seed here (random drawings up to 3 000 pieces).
     EXPECT_LE(pen_up[2], pen_up[1] + 1e-9);
   }
 }
