@@ -73,14 +73,18 @@ struct Sequence {
   bool deadline_hit = false;
 };
 
-// `neighbours`: the matching's neighbour lists over g.odd, reused by improve_order().
+// `neighbours`: the matching's neighbour lists over g.odd, as long as improve_order() will read them when
+// every stroke is open (odd / 2 strokes), so that it need not search again.
+std::size_t shared_list_length(const PenGraph& g) {
+  return std::max(plan::kMatchingNeighbours, plan::improve_list_length(g.odd.size() / 2));
+}
 std::vector<plan::VertexPair> matched_pairing(const PenGraph& g, std::vector<std::uint32_t>& neighbours) {
   std::vector<Pt> points;
   points.reserve(g.odd.size());
   for (std::uint32_t v : g.odd)
     points.push_back({static_cast<double>(g.vertices[v].x), static_cast<double>(g.vertices[v].y)});
   std::vector<plan::VertexPair> pairs;
-  for (const auto& [i, j] : plan::min_weight_matching(points, &neighbours))
+  for (const auto& [i, j] : plan::min_weight_matching(points, &neighbours, shared_list_length(g)))
     pairs.emplace_back(g.odd[i], g.odd[j]);
   return pairs;
 }
@@ -107,7 +111,7 @@ Sequence plan_sequence(const std::vector<Group>& groups, Pt home, bool optimize,
     } else {
       plan::order_circuits(gs.strokes, g.vertices, ends);
       const Clock::time_point started = Clock::now();
-      const plan::SharedNeighbours shared{&g.odd, &neighbours, plan::kMatchingNeighbours};
+      const plan::SharedNeighbours shared{&g.odd, &neighbours, shared_list_length(g)};
       const plan::ImproveResult r =
           plan::improve_order(gs.strokes, g.vertices, ends, started + budget, 500, &shared);
       budget -= std::min(budget, Clock::now() - started);

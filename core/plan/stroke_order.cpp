@@ -31,8 +31,7 @@ class TourImprover {
         shared_(shared) {
     n_ = strokes.size();
     N_ = n_ + 1;
-    // Neighbour-list length: 8, or longer for small tours where a wider search costs little.
-    K = N_ <= 64 ? 31 : (N_ <= 1024 ? 16 : (N_ <= 16384 ? 8 : 5));
+    K = improve_list_length(n_) - 1;
     p0_.resize(N_);
     p1_.resize(N_);
     for (std::size_t s = 0; s < n_; ++s) set_ends(s);
@@ -97,7 +96,7 @@ class TourImprover {
 
   // The lists from `shared_` when they cover exactly the stroke end points (see improve_order()).
   bool neighbours_from_shared() {
-    if (!shared_ || !shared_->listed || !shared_->lists || shared_->k != K + 1 ||
+    if (!shared_ || !shared_->listed || !shared_->lists || shared_->k < K + 1 ||
         shared_->listed->size() != 2 * n_ || shared_->lists->size() != shared_->k * 2 * n_)
       return false;
     std::vector<std::uint32_t> node_of_vertex(vertices_.size(), kNone);
@@ -116,7 +115,7 @@ class TourImprover {
     for (std::size_t i = 0; i < node_of.size(); ++i) {
       const std::uint32_t v = node_of[i];
       std::size_t k = 0;
-      for (std::size_t m = 0; m < shared_->k && k < K; ++m) {
+      for (std::size_t m = 0; m < K + 1 && k < K; ++m) {
         const std::uint32_t c = (*shared_->lists)[i * shared_->k + m];
         if (c == kNone) break;
         if ((node_of[c] >> 1) != (v >> 1)) nbr_[v * K + k++] = node_of[c];
@@ -130,6 +129,17 @@ class TourImprover {
       std::partial_sort(near.begin(), near.begin() + m, near.end());
       for (std::ptrdiff_t k = 0; k < m; ++k)
         nbr_[v * K + static_cast<std::size_t>(k)] = near[static_cast<std::size_t>(k)].second;
+      // ... and each in the lists of the stroke ends it is among the K nearest of, as a search over all
+      // nodes would have it: moves that bring a stroke next to the start or the end come from those.
+      for (std::uint32_t c = 0; c < 2 * n_ && !is_free(v); ++c) {
+        std::uint32_t* list = &nbr_[c * K];
+        const double dv = dist2(point(v), point(c));
+        std::size_t at = K;
+        while (at > 0 && (list[at - 1] == kNone || dist2(point(list[at - 1]), point(c)) > dv)) --at;
+        if (at == K) continue;
+        for (std::size_t j = K - 1; j > at; --j) list[j] = list[j - 1];
+        list[at] = v;
+      }
     }
     result_.work += 2 * N_ * 16;
     return true;
@@ -397,6 +407,13 @@ class TourImprover {
 };
 
 }  // namespace
+
+std::size_t improve_list_length(std::size_t strokes) {
+  // K neighbours per stroke end (the list also holds the end itself or its stroke's other end): 5, or
+  // more for small tours, where a wider search costs little.
+  const std::size_t nodes = strokes + 1;
+  return 1 + (nodes <= 64 ? 31 : (nodes <= 16384 ? 8 : 5));
+}
 
 double tour_travel(const std::vector<GridStroke>& strokes, const std::vector<GridPoint>& vertices,
                    const TourEnds& ends) {

@@ -9,7 +9,7 @@
 //     strokes.
 //   * improve_order: 2-opt (segment reversal, which also reverses the strokes in it) and Or-opt (moving
 //     one to three consecutive strokes elsewhere, either way round) driven by nearest-neighbour lists of
-//     the stroke end points (5 each; 8 below 16 384 strokes, 16 below 1024, 31 below 64; built once, or
+//     the stroke end points (5 each; 8 below 16 384 strokes, 31 below 64; built once, or
 //     taken from the odd-vertex matching) and a work queue, then each closed stroke re-entered at its best
 //     vertex; a second round if any was. The tour is a cycle closed by a pseudo-stroke from `end` to `start`,
 //     kept in a circular array where a move rewrites the shorter of the two arcs, and moves rewriting more
@@ -67,10 +67,13 @@ struct SharedNeighbours {
   std::size_t k = 0;
 };
 
+// The neighbour-list length improve_order() searches for a tour of `strokes` strokes (6 beyond 16 384).
+std::size_t improve_list_length(std::size_t strokes);
+
 // `work_per_stroke` bounds the work (see ImproveResult) at work_per_stroke · (strokes + 1). `shared`, when
-// its vertices are exactly the open strokes' end points (no closed stroke) and its k is the list length
-// improve_order() would search (6 beyond 16 384 strokes), replaces the neighbour search (the pseudo-stroke's
-// two ends then get theirs by a linear scan and appear in no other list).
+// its vertices are exactly the open strokes' end points (no closed stroke) and its k is at least
+// improve_list_length() (the first that many of each list are read), replaces the neighbour search (the
+// pseudo-stroke's two ends then get theirs by a linear scan and appear in no other list).
 ImproveResult improve_order(std::vector<GridStroke>& strokes, const std::vector<GridPoint>& vertices,
                             const TourEnds& ends, std::chrono::steady_clock::time_point deadline,
                             std::size_t work_per_stroke = 500, const SharedNeighbours* shared = nullptr);
