@@ -3,9 +3,11 @@
 
 #include <iostream>
 
+#include "runtime/allocator_policy.hpp"
 #include "runtime/cli.hpp"
 
 int main(int argc, char** argv) {
+  hlr::runtime::keep_freed_memory();
   return hlr::runtime::run_cli(argc, argv, std::cin, ::isatty(STDIN_FILENO) == 1, std::cout, std::cerr,
                                ::isatty(STDERR_FILENO) == 1);
 }
