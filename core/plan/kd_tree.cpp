@@ -11,6 +11,9 @@
 namespace hlr::plan {
 namespace {
 // Plain (not value-initialised) scratch entries: the query arrays live on the stack, uncleared.
+// all_k_nearest() compares every pair up to this many points.
+constexpr std::size_t kBruteForceNearest = 128;
+
 struct Scored {
   double d;
   std::uint32_t i;
@@ -173,6 +176,18 @@ void all_k_nearest(const std::vector<Pt>& points, std::size_t k, std::vector<std
   k = std::min<std::size_t>(k, 64);
   out.assign(n * k, kNone);
   if (n < 2 || k == 0) return;
+  if (n <= kBruteForceNearest) {  // every pair: cheaper than setting up a grid for a few points
+    std::vector<Scored> all(n - 1);
+    for (std::uint32_t i = 0; i < n; ++i) {
+      std::size_t m = 0;
+      for (std::uint32_t j = 0; j < n; ++j)
+        if (j != i) all[m++] = {dist2(points[i], points[j]), j};
+      const std::size_t keep = std::min(k, all.size());
+      std::partial_sort(all.begin(), all.begin() + static_cast<std::ptrdiff_t>(keep), all.end());
+      for (std::size_t m2 = 0; m2 < keep; ++m2) out[i * k + m2] = all[m2].i;
+    }
+    return;
+  }
   double xmin = points[0].x, xmax = xmin, ymin = points[0].y, ymax = ymin;
   for (const Pt& p : points) {
     xmin = std::min(xmin, p.x), xmax = std::max(xmax, p.x);

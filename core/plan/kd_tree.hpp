@@ -67,13 +67,12 @@ class KdTree {
 };
 
 // For every point, up to k nearest other points (nearest first, ties by index) into
-// out[i·k … i·k + k), padded with KdTree::kNone. A uniform grid of about two cells per point answers most
-// queries from the cells within a few rings around the point; a point in a crowded
-// neighbourhood, or whose k-th neighbour lies beyond a few rings, asks a k-d tree. Same result as
-// KdTree::k_nearest for every point.
-// With `exact` false the search stops as soon as k points are found in the rings 0…r around the point's
-// cell (r ≥ 1): nearly always the true k nearest, occasionally a slightly farther one — candidate lists
-// for heuristics, at about half the cost.
+// out[i·k … i·k + k), padded with KdTree::kNone. Up to 128 points, every pair is compared; beyond, a uniform
+// grid of about two cells per point answers most queries from the cells within a few rings around the point;
+// a point in a crowded neighbourhood, or whose k-th neighbour lies beyond a few rings, asks a k-d tree. Same
+// result as KdTree::k_nearest for every point. With `exact` false the search stops as soon as k points are
+// found in the rings 0…r around the point's cell (r ≥ 1): nearly always the true k nearest, occasionally a
+// slightly farther one — candidate lists for heuristics, at about half the cost.
 void all_k_nearest(const std::vector<Pt>& points, std::size_t k, std::vector<std::uint32_t>& out,
                    bool exact = true);
 

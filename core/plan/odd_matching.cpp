@@ -14,6 +14,9 @@ namespace {
 
 using Pairs = std::vector<std::pair<std::uint32_t, std::uint32_t>>;
 
+// Below this many candidate pairs a comparison sort beats two passes over 65 536 counters.
+constexpr std::size_t kRadixSortMin = 4096;
+
 // dp[mask] = best matching of the points in mask, always pairing its lowest point first.
 std::vector<double> subset_dp(const std::vector<Pt>& p, std::vector<std::uint8_t>* partner_of_lowest) {
   const std::size_t n = p.size();
@@ -84,8 +87,10 @@ Pairs heuristic_matching(const std::vector<Pt>& p, std::vector<std::uint32_t>* n
     keys[c] = (static_cast<std::uint64_t>(std::bit_cast<std::uint32_t>(d)) << 32) | c;
   }
   // Keys come in increasing candidate number, so a stable radix sort on the length bits alone (two
-  // 16-bit passes) gives the same order as sorting the whole keys.
-  {
+  // 16-bit passes) gives the same order as sorting the whole keys — which is cheaper for few keys.
+  if (keys.size() < kRadixSortMin) {
+    std::sort(keys.begin(), keys.end());
+  } else {
     std::vector<std::uint64_t> tmp(keys.size());
     for (int shift = 32; shift < 64; shift += 16) {
       std::vector<std::uint32_t> count(65537, 0);

@@ -17,6 +17,9 @@ std::int64_t floor_div(double x, double s) {
   return i - (q < static_cast<double>(i) ? 1 : 0);
 }
 
+// Below this many keys a comparison sort beats two passes over 65 536 counters.
+constexpr std::size_t kRadixSortMin = 4096;
+
 // A vertex lying on a segment: its parameter along the segment (dot product) and its number.
 struct Split {
   std::int64_t t;
@@ -99,13 +102,19 @@ PenGraph build_pen_graph(std::span<const GridSegment> segments, double tolerance
       keyed[i] = {
           (static_cast<std::uint64_t>(ends[i].x - x0) << ybits) | static_cast<std::uint64_t>(ends[i].y - y0),
           static_cast<std::uint32_t>(i)};
-    std::vector<std::uint32_t> count(65537);
-    for (int shift = 0; shift < bits; shift += 16) {
-      std::fill(count.begin(), count.end(), 0u);
-      for (const Keyed& k : keyed) ++count[((k.key >> shift) & 0xffffu) + 1];
-      for (std::size_t b = 1; b < count.size(); ++b) count[b] += count[b - 1];
-      for (const Keyed& k : keyed) tmp[count[(k.key >> shift) & 0xffffu]++] = k;
-      keyed.swap(tmp);
+    if (keyed.size() < kRadixSortMin) {  // the same order; the radix passes' counters cost more here
+      std::sort(keyed.begin(), keyed.end(), [](const Keyed& p, const Keyed& q) {
+        return p.key != q.key ? p.key < q.key : p.occurrence < q.occurrence;
+      });
+    } else {
+      std::vector<std::uint32_t> count(65537);
+      for (int shift = 0; shift < bits; shift += 16) {
+        std::fill(count.begin(), count.end(), 0u);
+        for (const Keyed& k : keyed) ++count[((k.key >> shift) & 0xffffu) + 1];
+        for (std::size_t b = 1; b < count.size(); ++b) count[b] += count[b - 1];
+        for (const Keyed& k : keyed) tmp[count[(k.key >> shift) & 0xffffu]++] = k;
+        keyed.swap(tmp);
+      }
     }
     constexpr std::uint32_t kUnset = ~0u;
     std::vector<std::uint32_t> first(ends.size()), id(ends.size(), kUnset);  // per occurrence
