@@ -29,6 +29,22 @@ void add_hidden_intervals(const FrameSetup& setup, const Camera& camera, const C
                           const Occluder& o, OcclusionScratch& scratch, IntervalSet& hidden) {
   const double ltol = setup.length_tolerance;
   const double ptol = std::max(c.picture_tolerance, o.picture_tolerance);
+  // Quick reject: the polygon's outline lies wholly on one side of the segment's line, beyond the
+  // tolerance (the sides of a prism seen at a slant overlap in their boxes, not on the picture; a
+  // 20 000-gon prism's edges meet 60 such sides each, and this rejects 98 % of its tests). First, as the
+  // cheapest test. Only for small polygons: a large one is cheaper to meet through its grid.
+  const std::uint32_t outer_end = setup.ring_ends[o.first_ring];
+  if (outer_end - o.first_point <= kSideTestPoints) {
+    const Vector2 d = c.pic1 - c.pic0;
+    const double reach = ptol * length(d);
+    bool left = true, right = true;
+    for (std::uint32_t i = o.first_point; i < outer_end && (left || right); ++i) {
+      const double side = cross(d, setup.polygon_points[i] - c.pic0);
+      left = left && side > reach;
+      right = right && side < -reach;
+    }
+    if (left || right) return;
+  }
   // 1. Behind the plane: g(t) = eye_side·(n·v(t) + offset) < 0, linear in t.
   const double g0 = o.eye_side * (dot(o.normal, to_vector(c.view0)) + o.offset);
   const double g1 = o.eye_side * (dot(o.normal, to_vector(c.view1)) + o.offset);
@@ -48,22 +64,6 @@ void add_hidden_intervals(const FrameSetup& setup, const Camera& camera, const C
   const Rect2 box{o.bounds.xmin - ptol, o.bounds.ymin - ptol, o.bounds.xmax + ptol, o.bounds.ymax + ptol};
   const auto over = clip_segment_to_rect(c.pic0, c.pic1, box);
   if (!over || over->second < s_lo || over->first > s_hi) return;
-
-  // Quick reject 2: the polygon's outline lies wholly on one side of the segment's line, beyond the
-  // tolerance (the sides of a prism seen at a slant overlap in their boxes, not on the picture). Only for
-  // small polygons: a large one is cheaper to meet through its grid.
-  const std::uint32_t outer_end = setup.ring_ends[o.first_ring];
-  if (outer_end - o.first_point <= kSideTestPoints) {
-    const Vector2 d = c.pic1 - c.pic0;
-    const double reach = ptol * length(d);
-    bool left = true, right = true;
-    for (std::uint32_t i = o.first_point; i < outer_end && (left || right); ++i) {
-      const double side = cross(d, setup.polygon_points[i] - c.pic0);
-      left = left && side > reach;
-      right = right && side < -reach;
-    }
-    if (left || right) return;
-  }
 
   // 2. Inside the projected polygon: break the picture segment where it meets any ring edge or passes
   //    within the tolerance of a ring vertex, then classify each piece by its midpoint. Extra breaks are
