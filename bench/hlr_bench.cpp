@@ -14,6 +14,7 @@
 #include <utility>
 
 #include "bench/bench_scenes.hpp"
+#include "bench/command_main.hpp"
 #include "core/hlr/render_frame.hpp"
 
 namespace {
@@ -103,4 +104,4 @@ BENCHMARK(BM_SelfCrossingsMesh)->Arg(100000)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 
-BENCHMARK_MAIN();
+HLR_BENCHMARK_MAIN()

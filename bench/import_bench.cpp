@@ -11,6 +11,7 @@
 #include <string>
 #include <utility>
 
+#include "bench/command_main.hpp"
 #include "stdlib/generators.hpp"
 #include "stdlib/mesh_import.hpp"
 
@@ -136,4 +137,4 @@ BENCHMARK(Obj)->Arg(75000)->Unit(benchmark::kMillisecond);
 BENCHMARK(StlAscii)->Arg(75000)->Unit(benchmark::kMillisecond);
 BENCHMARK(StlBinary)->Arg(75000)->Arg(1000000)->Unit(benchmark::kMillisecond);
 
-BENCHMARK_MAIN();
+HLR_BENCHMARK_MAIN()

@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "bench/bench_scenes.hpp"
+#include "bench/command_main.hpp"
 #include "core/device/page_layout.hpp"
 #include "core/hlr/render_frame.hpp"
 #include "core/plan/pen_plan.hpp"
@@ -138,4 +139,4 @@ PLAN_BENCH(BM_TorusOptimized, ->Arg(10000)->Arg(100000));
 
 }  // namespace
 
-BENCHMARK_MAIN();
+HLR_BENCHMARK_MAIN()

@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "runtime/allocator_policy.hpp"
+#include "bench/command_main.hpp"
 #include "runtime/cli.hpp"
 #include "runtime/solid_cache.hpp"
 
@@ -66,12 +66,4 @@ BENCHMARK(Turntable100kPdf)->Arg(1)->Arg(2)->ArgName("jobs")->Unit(benchmark::kM
 BENCHMARK(LandingPdf)->Arg(1)->Arg(2)->ArgName("jobs")->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(LandingHpgl)->Arg(1)->Arg(2)->ArgName("jobs")->Unit(benchmark::kMillisecond)->UseRealTime();
 
-// The command's own allocator policy (runtime/main.cpp), so that runs here cost what they cost there.
-int main(int argc, char** argv) {
-  hlr::runtime::keep_freed_memory();
-  benchmark::Initialize(&argc, argv);
-  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
-  benchmark::RunSpecifiedBenchmarks();
-  benchmark::Shutdown();
-  return 0;
-}
+HLR_BENCHMARK_MAIN()

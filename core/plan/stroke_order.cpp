@@ -412,7 +412,7 @@ std::size_t improve_list_length(std::size_t strokes) {
   // K neighbours per stroke end (the list also holds the end itself or its stroke's other end): 5, or
   // more for small tours, where a wider search costs little.
   const std::size_t nodes = strokes + 1;
-  return 1 + (nodes <= 64 ? 15 : (nodes <= 16384 ? 8 : 5));
+  return 1 + (nodes <= 64 ? 31 : (nodes <= 16384 ? 8 : 5));
 }
 
 double tour_travel(const std::vector<GridStroke>& strokes, const std::vector<GridPoint>& vertices,

@@ -9,7 +9,7 @@
 //     strokes.
 //   * improve_order: 2-opt (segment reversal, which also reverses the strokes in it) and Or-opt (moving
 //     one to three consecutive strokes elsewhere, either way round) driven by nearest-neighbour lists of
-//     the stroke end points (5 each; 8 below 16 384 strokes, 15 below 64; built once, or
+//     the stroke end points (5 each; 8 below 16 384 strokes, 31 below 64; built once, or
 //     taken from the odd-vertex matching) and a work queue, then each closed stroke re-entered at its best
 //     vertex; a second round if any was. The tour is a cycle closed by a pseudo-stroke from `end` to `start`,
 //     kept in a circular array where a move rewrites the shorter of the two arcs, and moves rewriting more
