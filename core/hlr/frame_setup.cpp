@@ -12,6 +12,10 @@ namespace {
 
 bool is_perspective(const Camera& camera) { return camera.projection == Projection::Perspective; }
 
+// Objects with at least this many faces are prepared in slices of this many faces (and edges), in
+// parallel; smaller ones whole, in runs.
+constexpr std::size_t kSliceFaces = 8192;
+
 // The view-space tolerance of the frame: relative to the view-space coordinates, plus the rounding their
 // world-space sources carry (far from the origin, a view coordinate inherits the world coordinate's).
 Tolerance frame_tolerance(const Scene& scene, const Camera& camera) {
@@ -60,13 +64,14 @@ bool wholly_in_front(const std::vector<Point3>& view_vertices, const Camera& cam
                      [&](const Point3& v) { return v.z >= camera.near_depth + tolerance; });
 }
 
+// The occluders of faces [face_begin, face_end).
 void add_occluders(FrameSetup& setup, std::uint32_t object_index, const Solid& solid,
                    const std::vector<Point3>& view_vertices, const std::vector<std::int8_t>& facing,
-                   bool cull, const Camera& camera) {
+                   bool cull, const Camera& camera, std::size_t face_begin, std::size_t face_end) {
   std::vector<Point3> ring_points, clipped;
   std::vector<FaceIndex> ring_seams, clipped_seams;
   auto occludes = [&](FaceIndex f) { return f != kNoFace && facing[f] != 0 && !(cull && facing[f] < 0); };
-  for (std::size_t f = 0; f < solid.faces.size(); ++f) {
+  for (std::size_t f = face_begin; f < face_end; ++f) {
     if (!occludes(static_cast<FaceIndex>(f))) continue;
     const Face& face = solid.faces[f];
     Occluder occ;
@@ -156,11 +161,10 @@ struct ViewSide {
   Vector3 direction{};  // world viewing direction
 };
 
-// Per face: +1 front, −1 back, 0 edge-on.
+// Per face of [begin, end): +1 front, −1 back, 0 edge-on, into `facing` (sized for every face).
 void face_facing(const Solid& solid, const ViewSide& view, double length_tolerance,
-                 std::vector<std::int8_t>& facing) {
-  facing.assign(solid.faces.size(), 0);
-  for (std::size_t f = 0; f < solid.faces.size(); ++f) {
+                 std::vector<std::int8_t>& facing, std::size_t begin, std::size_t end) {
+  for (std::size_t f = begin; f < end; ++f) {
     const Vector3 n = solid.planes[f].normal;
     double s, tol;
     if (view.perspective) {
@@ -179,8 +183,8 @@ void face_facing(const Solid& solid, const ViewSide& view, double length_toleran
 // Which edges of one object are candidates, and whether the back-face rules alone hide them.
 void add_edge_candidates(FrameSetup& part, std::uint32_t o, const Solid& solid,
                          const std::vector<Point3>& view_vertices, const std::vector<std::int8_t>& facing,
-                         bool cull, bool keep_culled) {
-  for (std::uint32_t e = 0; e < solid.edges.size(); ++e) {
+                         bool cull, bool keep_culled, std::size_t edge_begin, std::size_t edge_end) {
+  for (auto e = static_cast<std::uint32_t>(edge_begin); e < edge_end; ++e) {
     const SolidEdge& edge = solid.edges[e];
     const int fl = edge.left >= 0 ? facing[edge.left] : 0;
     const int fr = edge.right >= 0 ? facing[edge.right] : 0;
@@ -281,30 +285,78 @@ FrameSetup prepare_frame(const Scene& scene, const Camera& camera, bool intersec
                       camera.direction_world()};
 
   // Objects are independent: chunks of them are prepared in parallel into parts of their own, joined in
-  // order afterwards, so the result does not depend on the number of threads.
+  // order afterwards, so the result does not depend on the number of threads. A large object (a mesh of
+  // its own) is prepared in slices of its faces and edges instead, once its view-space vertices and its
+  // faces' facing are known: its occluders and candidates come out in the same order as in one piece.
   const std::size_t n = scene.objects.size();
   std::vector<std::vector<std::int8_t>> facing(n);
   std::vector<char> cull(n, 0);
-  const std::size_t chunk = std::max<std::size_t>(1, n / 64);
-  const std::size_t chunks = (n + chunk - 1) / chunk;
-  std::vector<FrameSetup> parts(chunks);
+  std::vector<std::vector<Point3>> sliced_view(n);  // view-space vertices of the sliced objects
+  struct Job {
+    std::size_t object_begin, object_end;  // whole objects; or one sliced object:
+    std::size_t face_begin = 0, face_end = 0, edge_begin = 0, edge_end = 0;
+    bool slice = false;
+  };
+  std::vector<Job> jobs;
   std::size_t faces = 0;
   for (const SceneObject& o : scene.objects) faces += o.solid->faces.size();
   // Preparing a face takes well under a microsecond: a few thousand are not worth sharing out.
-  parallel_chunks(chunks, threads_for(faces, 4096, threads), [&](std::size_t k) {
+  const unsigned frame_threads = threads_for(faces, 4096, threads);
+  const std::size_t chunk = std::max<std::size_t>(1, n / 64);
+  for (std::size_t o = 0; o < n;) {
+    const Solid& solid = *scene.objects[o].solid;
+    if (solid.faces.size() < kSliceFaces) {  // a run of small objects, up to `chunk` of them
+      std::size_t end = o + 1;
+      while (end < n && end - o < chunk && scene.objects[end].solid->faces.size() < kSliceFaces) ++end;
+      jobs.push_back({o, end});
+      o = end;
+      continue;
+    }
+    std::vector<Point3>& view_vertices = sliced_view[o];
+    view_vertices.resize(solid.vertices.size());
+    facing[o].assign(solid.faces.size(), 0);
+    const std::size_t slices =
+        (std::max(solid.faces.size(), solid.edges.size()) + kSliceFaces - 1) / kSliceFaces;
+    parallel_chunks(slices, frame_threads, [&](std::size_t k) {
+      for (std::size_t i = solid.vertices.size() * k / slices; i < solid.vertices.size() * (k + 1) / slices;
+           ++i)
+        view_vertices[i] = camera.view(solid.vertices[i]);
+    });
+    parallel_chunks(slices, frame_threads, [&](std::size_t k) {
+      face_facing(solid, view, ltol, facing[o], solid.faces.size() * k / slices,
+                  solid.faces.size() * (k + 1) / slices);
+    });
+    cull[o] = solid.closed && wholly_in_front(view_vertices, camera, ltol);
+    for (std::size_t k = 0; k < slices; ++k)
+      jobs.push_back({o, o + 1, solid.faces.size() * k / slices, solid.faces.size() * (k + 1) / slices,
+                      solid.edges.size() * k / slices, solid.edges.size() * (k + 1) / slices, true});
+    ++o;
+  }
+  std::vector<FrameSetup> parts(jobs.size());
+  parallel_chunks(jobs.size(), frame_threads, [&](std::size_t k) {
     std::vector<Point3> view_vertices;
     {
       FrameSetup& part = parts[k];
-      for (std::size_t o = k * chunk; o < std::min(n, (k + 1) * chunk); ++o) {
+      const Job& job = jobs[k];
+      for (std::size_t o = job.object_begin; o < job.object_end; ++o) {
         const Solid& solid = *scene.objects[o].solid;
+        const auto index = static_cast<std::uint32_t>(o);
+        if (job.slice) {
+          add_occluders(part, index, solid, sliced_view[o], facing[o], cull[o], camera, job.face_begin,
+                        job.face_end);
+          add_edge_candidates(part, index, solid, sliced_view[o], facing[o], cull[o], keep_culled,
+                              job.edge_begin, job.edge_end);
+          continue;
+        }
         view_vertices.resize(solid.vertices.size());
         for (std::size_t i = 0; i < solid.vertices.size(); ++i)
           view_vertices[i] = camera.view(solid.vertices[i]);
-        face_facing(solid, view, ltol, facing[o]);
+        facing[o].assign(solid.faces.size(), 0);
+        face_facing(solid, view, ltol, facing[o], 0, solid.faces.size());
         cull[o] = solid.closed && wholly_in_front(view_vertices, camera, ltol);
-        const auto index = static_cast<std::uint32_t>(o);
-        add_occluders(part, index, solid, view_vertices, facing[o], cull[o], camera);
-        add_edge_candidates(part, index, solid, view_vertices, facing[o], cull[o], keep_culled);
+        add_occluders(part, index, solid, view_vertices, facing[o], cull[o], camera, 0, solid.faces.size());
+        add_edge_candidates(part, index, solid, view_vertices, facing[o], cull[o], keep_culled, 0,
+                            solid.edges.size());
       }
       clip_and_project(part, 0, camera, ltol);
       for (Occluder& occ : part.occluders) {
@@ -323,6 +375,7 @@ FrameSetup prepare_frame(const Scene& scene, const Camera& camera, bool intersec
       part.candidates.shrink_to_fit();
     }
   });
+  sliced_view = {};
   std::size_t points = 0, rings = 0, occluders = 0, candidates = 0;
   for (const FrameSetup& part : parts) {
     points += part.polygon_points.size();
