@@ -4,11 +4,12 @@
 #include <cmath>
 #include <vector>
 
+#include "core/parallel.hpp"
 #include "core/tolerance.hpp"
 
 namespace hlr {
 
-FaceGrid::FaceGrid(const FrameSetup& setup, const Rect2& domain) : domain_(domain) {
+FaceGrid::FaceGrid(const FrameSetup& setup, const Rect2& domain, unsigned threads) : domain_(domain) {
   const std::vector<Occluder>& occluders = setup.occluders;
   if (occluders.empty() || domain.empty()) return;
   // About one cell per occluder, at most 2048 a side, shaped like a typical occluder (the median width
@@ -79,12 +80,30 @@ FaceGrid::FaceGrid(const FrameSetup& setup, const Rect2& domain) : domain_(domai
       for (int c = from; c <= to; ++c) fn(static_cast<std::size_t>(r) * nx_ + c);
     }
   };
-  for (const Occluder& o : occluders) for_cells(o, [&](std::size_t cell) { ++cell_start_[cell + 1]; });
+  // Each occluder's cells are found once, by chunks of occluders in parallel, as (cell, occluder) pairs in
+  // occluder order; the cells' lists are then filled chunk after chunk, so each lists its occluders in
+  // order whatever the number of threads.
+  struct Entry {
+    std::uint32_t cell, occluder;
+  };
+  constexpr std::size_t kChunk = 4096;
+  const std::size_t chunks = (occluders.size() + kChunk - 1) / kChunk;
+  std::vector<std::vector<Entry>> entries(chunks);
+  parallel_chunks(chunks, threads_for(occluders.size(), 2 * kChunk, threads), [&](std::size_t k) {
+    for (std::size_t i = k * kChunk; i < std::min(occluders.size(), (k + 1) * kChunk); ++i)
+      for_cells(occluders[i], [&](std::size_t cell) {
+        entries[k].push_back({static_cast<std::uint32_t>(cell), static_cast<std::uint32_t>(i)});
+      });
+  });
+  for (const std::vector<Entry>& chunk : entries)
+    for (const Entry& e : chunk) ++cell_start_[e.cell + 1];
   for (std::size_t i = 1; i < cell_start_.size(); ++i) cell_start_[i] += cell_start_[i - 1];
   items_.resize(cell_start_.back());
   std::vector<std::uint32_t> fill(cell_start_.begin(), cell_start_.end() - 1);
-  for (std::uint32_t i = 0; i < occluders.size(); ++i)
-    for_cells(occluders[i], [&](std::size_t cell) { items_[fill[cell]++] = i; });
+  for (std::vector<Entry>& chunk : entries) {
+    for (const Entry& e : chunk) items_[fill[e.cell]++] = e.occluder;
+    chunk = {};
+  }
 }
 
 int FaceGrid::column(double x) const {

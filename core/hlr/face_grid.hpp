@@ -13,8 +13,9 @@ namespace hlr {
 class FaceGrid {
  public:
   // Indexes the frame's occluders over `domain` (the region where anything is drawn): each in the cells
-  // its outline covers, row by row (by its bounds when the outline has many points).
-  FaceGrid(const FrameSetup& setup, const Rect2& domain);
+  // its outline covers, row by row (by its bounds when the outline has many points). `threads` as for
+  // parallel_chunks(); the grid is the same for any value.
+  FaceGrid(const FrameSetup& setup, const Rect2& domain, unsigned threads = 1);
 
   // Calls visit(occluder index) once for every occluder listed in a cell the segment a→b crosses.
   // `stamp` must have one entry per occluder and `mark` must be unique per call (duplicate filter).

@@ -131,7 +131,7 @@ FrameResult render_frame(const Scene& scene, const Camera& camera, const HlrOpti
     if (c.source == SegmentSource::Intersection) ++result.stats.intersection_lines;
   if (setup.candidates.empty()) return result;
 
-  auto grid = std::make_unique<const FaceGrid>(setup, domain);
+  auto grid = std::make_unique<const FaceGrid>(setup, domain, options.threads);
 
   // Candidates are split into chunks; each chunk's output is kept apart and joined in order, so the
   // result does not depend on the number of threads.
