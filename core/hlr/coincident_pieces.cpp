@@ -74,13 +74,28 @@ std::size_t remove_covered_pieces(std::vector<VisibleSegment>& segments, unsigne
   };
   // Each piece's cells, found once (CSR: piece_cells[cell_start[i] .. cell_start[i + 1])), then the
   // pieces of each cell, in result order, by a counting sort.
+  // Found by chunks of pieces in parallel and joined in piece order.
+  constexpr std::uint32_t kChunk = 1024;
+  const std::uint32_t chunks = (static_cast<std::uint32_t>(n) + kChunk - 1) / kChunk;
+  const unsigned setup_threads = threads_for(n, 20000, threads);
   std::vector<std::uint32_t> cell_start(n + 1, 0);
+  std::vector<std::vector<std::uint32_t>> chunk_cells(chunks);
+  parallel_chunks(chunks, setup_threads, [&](std::size_t k) {
+    const auto first = static_cast<std::uint32_t>(k) * kChunk;
+    const std::uint32_t last = std::min(static_cast<std::uint32_t>(n), first + kChunk);
+    for (std::uint32_t i = first; i < last; ++i) {
+      const std::size_t before = chunk_cells[k].size();
+      if (!segments[i].hidden)
+        for_each_cell(segments[i], [&](int c) { chunk_cells[k].push_back(static_cast<std::uint32_t>(c)); });
+      cell_start[i + 1] = static_cast<std::uint32_t>(chunk_cells[k].size() - before);
+    }
+  });
+  for (std::size_t i = 0; i < n; ++i) cell_start[i + 1] += cell_start[i];
   std::vector<std::uint32_t> piece_cells;
-  piece_cells.reserve(2 * n);
-  for (std::uint32_t i = 0; i < n; ++i) {
-    if (!segments[i].hidden)
-      for_each_cell(segments[i], [&](int c) { piece_cells.push_back(static_cast<std::uint32_t>(c)); });
-    cell_start[i + 1] = static_cast<std::uint32_t>(piece_cells.size());
+  piece_cells.reserve(cell_start[n]);
+  for (std::vector<std::uint32_t>& cells_of_chunk : chunk_cells) {
+    piece_cells.insert(piece_cells.end(), cells_of_chunk.begin(), cells_of_chunk.end());
+    cells_of_chunk = {};
   }
   std::vector<std::uint32_t> starts(static_cast<std::size_t>(cells) * cells + 1, 0);
   for (std::uint32_t c : piece_cells) ++starts[c + 1];
@@ -98,11 +113,14 @@ std::size_t remove_covered_pieces(std::vector<VisibleSegment>& segments, unsigne
     Vector2 u;
   };
   std::vector<PictureLine> lines(n);
-  for (std::uint32_t i = 0; i < n; ++i) {
-    const Vector2 d = segments[i].s1 - segments[i].s0;
-    const double len = length(d);
-    lines[i] = {segments[i].s0, len > 0 ? (1 / len) * d : Vector2{0, 0}};
-  }
+  parallel_chunks(chunks, setup_threads, [&](std::size_t k) {
+    const auto first = static_cast<std::uint32_t>(k) * kChunk;
+    for (std::uint32_t i = first; i < std::min(static_cast<std::uint32_t>(n), first + kChunk); ++i) {
+      const Vector2 d = segments[i].s1 - segments[i].s0;
+      const double len = length(d);
+      lines[i] = {segments[i].s0, len > 0 ? (1 / len) * d : Vector2{0, 0}};
+    }
+  });
   auto on_line = [&](std::uint32_t i, std::uint32_t j, std::pair<double, double>& span) {
     const PictureLine& l = lines[i];
     const VisibleSegment& o = segments[j];
@@ -142,9 +160,7 @@ std::size_t remove_covered_pieces(std::vector<VisibleSegment>& segments, unsigne
   // Each piece is decided on its own (in parallel): covered wholly when the spans, along it, of the
   // earlier pieces on its line join up from 0 to 1 with no gap longer than the tolerance.
   std::vector<char> remove(n, 0);
-  constexpr std::uint32_t kChunk = 1024;
-  const std::uint32_t chunks = (static_cast<std::uint32_t>(n) + kChunk - 1) / kChunk;
-  parallel_chunks(chunks, threads_for(n, 20000, threads), [&](std::size_t k) {
+  parallel_chunks(chunks, setup_threads, [&](std::size_t k) {
     std::vector<std::uint32_t> met;
     std::vector<std::pair<double, double>> spans;
     const auto first = static_cast<std::uint32_t>(k) * kChunk;
