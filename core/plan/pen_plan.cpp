@@ -43,6 +43,8 @@ bool snap(double mm, double grid, std::int64_t& out) {
 std::vector<Group> snap_groups(const std::vector<PlotPiece>& pieces, double grid, std::size_t& dropped) {
   std::map<std::pair<int, int>, std::size_t> index;  // (pen, layer) → group; Visible (0) before Hidden (1)
   std::vector<Group> groups;
+  std::pair<int, int> last_key{0, -1};  // consecutive pieces mostly share their group: ask the map less
+  std::size_t last_group = 0;
   for (const PlotPiece& p : pieces) {
     GridSegment s;
     if (!snap(p.a.x, grid, s.a.x) || !snap(p.a.y, grid, s.a.y) || !snap(p.b.x, grid, s.b.x) ||
@@ -51,9 +53,13 @@ std::vector<Group> snap_groups(const std::vector<PlotPiece>& pieces, double grid
       continue;
     }
     const auto key = std::make_pair(p.pen, p.layer == StrokeLayer::Visible ? 0 : 1);
-    auto [it, inserted] = index.try_emplace(key, groups.size());
-    if (inserted) groups.push_back(Group{p.pen, p.layer, {}, {}});
-    groups[it->second].segments.push_back(s);
+    if (key != last_key) {
+      auto [it, inserted] = index.try_emplace(key, groups.size());
+      if (inserted) groups.push_back(Group{p.pen, p.layer, {}, {}});
+      last_key = key;
+      last_group = it->second;
+    }
+    groups[last_group].segments.push_back(s);
   }
   std::vector<Group> ordered;
   ordered.reserve(groups.size());
