@@ -298,6 +298,20 @@ FrameSetup prepare_frame(const Scene& scene, const Camera& camera, bool intersec
     bool slice = false;
   };
   std::vector<Job> jobs;
+  // Object o's view-space vertices, facing and culling, its vertices and faces shared out in `slices`.
+  auto view_object = [&](std::size_t o, std::size_t slices, unsigned job_threads,
+                         std::vector<Point3>& view_vertices) {
+    const Solid& solid = *scene.objects[o].solid;
+    const std::size_t nv = solid.vertices.size(), nf = solid.faces.size();
+    view_vertices.resize(nv);
+    facing[o].assign(nf, 0);
+    parallel_chunks(slices, job_threads, [&](std::size_t k) {
+      for (std::size_t i = nv * k / slices; i < nv * (k + 1) / slices; ++i)
+        view_vertices[i] = camera.view(solid.vertices[i]);
+      face_facing(solid, view, ltol, facing[o], nf * k / slices, nf * (k + 1) / slices);
+    });
+    cull[o] = solid.closed && wholly_in_front(view_vertices, camera, ltol);
+  };
   std::size_t faces = 0;
   for (const SceneObject& o : scene.objects) faces += o.solid->faces.size();
   // Preparing a face takes well under a microsecond: a few thousand are not worth sharing out.
@@ -312,21 +326,9 @@ FrameSetup prepare_frame(const Scene& scene, const Camera& camera, bool intersec
       o = end;
       continue;
     }
-    std::vector<Point3>& view_vertices = sliced_view[o];
-    view_vertices.resize(solid.vertices.size());
-    facing[o].assign(solid.faces.size(), 0);
     const std::size_t slices =
         (std::max(solid.faces.size(), solid.edges.size()) + kSliceFaces - 1) / kSliceFaces;
-    parallel_chunks(slices, frame_threads, [&](std::size_t k) {
-      for (std::size_t i = solid.vertices.size() * k / slices; i < solid.vertices.size() * (k + 1) / slices;
-           ++i)
-        view_vertices[i] = camera.view(solid.vertices[i]);
-    });
-    parallel_chunks(slices, frame_threads, [&](std::size_t k) {
-      face_facing(solid, view, ltol, facing[o], solid.faces.size() * k / slices,
-                  solid.faces.size() * (k + 1) / slices);
-    });
-    cull[o] = solid.closed && wholly_in_front(view_vertices, camera, ltol);
+    view_object(o, slices, frame_threads, sliced_view[o]);
     for (std::size_t k = 0; k < slices; ++k)
       jobs.push_back({o, o + 1, solid.faces.size() * k / slices, solid.faces.size() * (k + 1) / slices,
                       solid.edges.size() * k / slices, solid.edges.size() * (k + 1) / slices, true});
@@ -348,12 +350,7 @@ FrameSetup prepare_frame(const Scene& scene, const Camera& camera, bool intersec
                               job.edge_begin, job.edge_end);
           continue;
         }
-        view_vertices.resize(solid.vertices.size());
-        for (std::size_t i = 0; i < solid.vertices.size(); ++i)
-          view_vertices[i] = camera.view(solid.vertices[i]);
-        facing[o].assign(solid.faces.size(), 0);
-        face_facing(solid, view, ltol, facing[o], 0, solid.faces.size());
-        cull[o] = solid.closed && wholly_in_front(view_vertices, camera, ltol);
+        view_object(o, 1, 1, view_vertices);
         add_occluders(part, index, solid, view_vertices, facing[o], cull[o], camera, 0, solid.faces.size());
         add_edge_candidates(part, index, solid, view_vertices, facing[o], cull[o], keep_culled, 0,
                             solid.edges.size());

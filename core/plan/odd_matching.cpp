@@ -7,15 +7,13 @@
 #include <limits>
 #include <stdexcept>
 
+#include "core/plan/key_sort.hpp"
 #include "core/tolerance.hpp"
 
 namespace hlr::plan {
 namespace {
 
 using Pairs = std::vector<std::pair<std::uint32_t, std::uint32_t>>;
-
-// Below this many candidate pairs a comparison sort beats two passes over 65 536 counters.
-constexpr std::size_t kRadixSortMin = 4096;
 
 // dp[mask] = best matching of the points in mask, always pairing its lowest point first.
 std::vector<double> subset_dp(const std::vector<Pt>& p, std::vector<std::uint8_t>* partner_of_lowest) {
@@ -87,19 +85,9 @@ Pairs heuristic_matching(const std::vector<Pt>& p, std::vector<std::uint32_t>* n
     keys[c] = (static_cast<std::uint64_t>(std::bit_cast<std::uint32_t>(d)) << 32) | c;
   }
   // Keys come in increasing candidate number, so a stable radix sort on the length bits alone (two
-  // 16-bit passes) gives the same order as sorting the whole keys — which is cheaper for few keys.
-  if (keys.size() < kRadixSortMin) {
-    std::sort(keys.begin(), keys.end());
-  } else {
-    std::vector<std::uint64_t> tmp(keys.size());
-    for (int shift = 32; shift < 64; shift += 16) {
-      std::vector<std::uint32_t> count(65537, 0);
-      for (std::uint64_t k : keys) ++count[((k >> shift) & 0xffffu) + 1];
-      for (std::size_t b = 1; b < count.size(); ++b) count[b] += count[b - 1];
-      for (std::uint64_t k : keys) tmp[count[(k >> shift) & 0xffffu]++] = k;
-      keys.swap(tmp);
-    }
-  }
+  // 16-bit passes) gives the same order as sorting the whole keys.
+  stable_sort_by_key_bits(
+      keys, [](std::uint64_t k) { return k; }, 32, 64);
   for (std::uint64_t key : keys) {
     const auto [a, b] = pairs[key & 0xffffffffu];
     if (mate[a] == kNone && mate[b] == kNone) {

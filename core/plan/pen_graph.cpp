@@ -5,6 +5,7 @@
 #include <cmath>
 #include <numeric>
 
+#include "core/plan/key_sort.hpp"
 #include "core/tolerance.hpp"
 
 namespace hlr::plan {
@@ -16,9 +17,6 @@ std::int64_t floor_div(double x, double s) {
   const auto i = static_cast<std::int64_t>(q);
   return i - (q < static_cast<double>(i) ? 1 : 0);
 }
-
-// Below this many keys a comparison sort beats two passes over 65 536 counters.
-constexpr std::size_t kRadixSortMin = 4096;
 
 // A vertex lying on a segment: its parameter along the segment (dot product) and its number.
 struct Split {
@@ -97,25 +95,13 @@ PenGraph build_pen_graph(std::span<const GridSegment> segments, double tolerance
       std::uint64_t key;
       std::uint32_t occurrence;
     };
-    std::vector<Keyed> keyed(ends.size()), tmp(ends.size());
+    std::vector<Keyed> keyed(ends.size());
     for (std::size_t i = 0; i < ends.size(); ++i)
       keyed[i] = {
           (static_cast<std::uint64_t>(ends[i].x - x0) << ybits) | static_cast<std::uint64_t>(ends[i].y - y0),
           static_cast<std::uint32_t>(i)};
-    if (keyed.size() < kRadixSortMin) {  // the same order; the radix passes' counters cost more here
-      std::sort(keyed.begin(), keyed.end(), [](const Keyed& p, const Keyed& q) {
-        return p.key != q.key ? p.key < q.key : p.occurrence < q.occurrence;
-      });
-    } else {
-      std::vector<std::uint32_t> count(65537);
-      for (int shift = 0; shift < bits; shift += 16) {
-        std::fill(count.begin(), count.end(), 0u);
-        for (const Keyed& k : keyed) ++count[((k.key >> shift) & 0xffffu) + 1];
-        for (std::size_t b = 1; b < count.size(); ++b) count[b] += count[b - 1];
-        for (const Keyed& k : keyed) tmp[count[(k.key >> shift) & 0xffffu]++] = k;
-        keyed.swap(tmp);
-      }
-    }
+    stable_sort_by_key_bits(
+        keyed, [](const Keyed& k) { return k.key; }, 0, bits);
     constexpr std::uint32_t kUnset = ~0u;
     std::vector<std::uint32_t> first(ends.size()), id(ends.size(), kUnset);  // per occurrence
     for (std::size_t i = 0; i < keyed.size(); ++i)
