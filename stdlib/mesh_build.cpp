@@ -10,6 +10,7 @@
 #include <stdexcept>
 
 #include "core/format_number.hpp"
+#include "core/parallel.hpp"
 #include "core/solid/solid_builder.hpp"
 #include "core/tolerance.hpp"
 #include "stdlib/mesh_detail.hpp"
@@ -117,9 +118,33 @@ class Builder {
     out_ends_.reserve(n);
     out_raw_.reserve(n);
     seen_ = FaceCycleSet(n);
+    // Most faces need no repair: they are found side by side in parts (their cycle's hash with them), so
+    // that what must go in file order — duplicates, repairs and their warnings — is all that is left.
+    std::vector<std::uint64_t> hashes(n);
+    std::vector<char> plain(n, 0);
+    constexpr std::size_t kPartFaces = 4096;
+    parallel_chunks((n + kPartFaces - 1) / kPartFaces, threads_for(n, 2 * kPartFaces, 0), [&](std::size_t k) {
+      std::vector<std::uint32_t> ring, scratch, key;
+      for (std::size_t f = k * kPartFaces; f < std::min(n, (k + 1) * kPartFaces); ++f) {
+        std::uint32_t repeated_vertex = 0;
+        if (clean_ring(f, ring, repeated_vertex) || ring.size() < 3) continue;
+        const FaceShape shape = shape_of(ring, scratch);
+        if (shape.distinct != ring.size() || shape.zero_area || shape.non_planar) continue;
+        plain[f] = 1;
+        canonical_cycle(ring, key);
+        hashes[f] = cycle_hash(key);
+      }
+    });
+    constexpr std::size_t kAhead = 16;  // faces whose slot is asked for ahead of its lookup
     for (std::size_t f = 0; f < n; ++f) {
-      if (f + kAhead < n) prefetch_cycle(f + kAhead);
-      add_face(f);
+      if (f + kAhead < n && plain[f + kAhead]) seen_.prefetch(hashes[f + kAhead]);
+      if (!plain[f]) {
+        add_face(f);
+        continue;
+      }
+      std::uint32_t ignored = 0;
+      clean_ring(f, ring_, ignored);
+      if (!is_duplicate(ring_, f, hashes[f])) push_face(ring_, f);
     }
     for (std::size_t l = 0; l < raw_.lines.size(); ++l) add_line(l);
     if (out_ends_.empty() && lines_.empty())
@@ -236,30 +261,27 @@ class Builder {
     return repeated;
   }
 
-  void add_face(std::size_t f) {
-    const Source& where = raw_.face_sources[f];
-    std::vector<std::uint32_t>& ring = ring_;
-    std::uint32_t repeated_vertex = 0;
-    const bool repeated = clean_ring(f, ring, repeated_vertex);
+  // What the per-face repairs look at: distinct vertices, then (with three or more) area and flatness.
+  struct FaceShape {
+    std::size_t distinct = 0;
+    Vector3 normal{};  // Newell's: its length is twice the area
+    bool zero_area = false, non_planar = false;
+    double worst = 0;  // the farthest vertex's distance from the plane (non_planar only)
+    std::uint32_t worst_vertex = 0;
+  };
+  FaceShape shape_of(const std::vector<std::uint32_t>& ring, std::vector<std::uint32_t>& scratch) const {
+    FaceShape shape;
     // With no vertex repeated in a row, three vertices are distinct; larger rings are counted.
-    std::size_t distinct = ring.size();
+    shape.distinct = ring.size();
     if (ring.size() > 3) {
-      scratch_.assign(ring.begin(), ring.end());
-      std::sort(scratch_.begin(), scratch_.end());
-      distinct = static_cast<std::size_t>(std::unique(scratch_.begin(), scratch_.end()) - scratch_.begin());
+      scratch.assign(ring.begin(), ring.end());
+      std::sort(scratch.begin(), scratch.end());
+      shape.distinct =
+          static_cast<std::size_t>(std::unique(scratch.begin(), scratch.end()) - scratch.begin());
     }
-    if (distinct < 3) {
-      warnings_.add("degenerate-face",
-                    at(where,
-                       face_name(f) + " has only " + std::to_string(distinct) +
-                           (distinct == 1 ? " distinct vertex" : " distinct vertices") + "; dropped it",
-                       "a face needs at least three distinct vertices"));
-      return;
-    }
-
-    // Geometry: Newell normal and size.
+    if (shape.distinct < 3) return shape;
     const std::vector<Point3>& pos = positions_;
-    const Vector3 normal = newell_normal(pos, std::span<const std::uint32_t>(ring));
+    shape.normal = newell_normal(pos, std::span<const std::uint32_t>(ring));
     Point3 lo = pos[ring[0]], hi = lo;
     for (std::uint32_t v : ring) {
       lo = {std::min(lo.x, pos[v].x), std::min(lo.y, pos[v].y), std::min(lo.z, pos[v].z)};
@@ -267,7 +289,39 @@ class Builder {
     }
     const double size = distance(lo, hi);
     // The builder's zero-area floor is kRelative · size²; dropping up to 4× that keeps us clear of it.
-    if (!(length(normal) > 4 * Tolerance::kRelative * std::max(size, Tolerance::kFloor) * size)) {
+    shape.zero_area =
+        !(length(shape.normal) > 4 * Tolerance::kRelative * std::max(size, Tolerance::kFloor) * size);
+    // Half the builder's planarity tolerance, so no face we pass on can fail its check. A triangle is
+    // planar; rings with bridges (a vertex twice) go to the builder as loops.
+    if (shape.zero_area || ring.size() <= 3 || shape.distinct != ring.size()) return shape;
+    const Vector3 unit = normalize(shape.normal);
+    Vector3 sum{};
+    for (std::uint32_t v : ring) sum += to_vector(pos[v]);
+    const Point3 centroid = to_point(sum / static_cast<double>(ring.size()));
+    shape.worst_vertex = ring[0];
+    for (std::uint32_t v : ring) {
+      const double d = std::abs(dot(pos[v] - centroid, unit));
+      if (d > shape.worst) shape.worst = d, shape.worst_vertex = v;
+    }
+    shape.non_planar = shape.worst > 0.5 * Tolerance::kPlanarity * size;
+    return shape;
+  }
+
+  void add_face(std::size_t f) {
+    const Source& where = raw_.face_sources[f];
+    std::vector<std::uint32_t>& ring = ring_;
+    std::uint32_t repeated_vertex = 0;
+    const bool repeated = clean_ring(f, ring, repeated_vertex);
+    const FaceShape shape = shape_of(ring, scratch_);
+    if (shape.distinct < 3) {
+      warnings_.add("degenerate-face",
+                    at(where,
+                       face_name(f) + " has only " + std::to_string(shape.distinct) +
+                           (shape.distinct == 1 ? " distinct vertex" : " distinct vertices") + "; dropped it",
+                       "a face needs at least three distinct vertices"));
+      return;
+    }
+    if (shape.zero_area) {
       warnings_.add("degenerate-face",
                     at(where, face_name(f) + " has zero area (its vertices are collinear); dropped it",
                        "remove the face from the file"));
@@ -278,25 +332,11 @@ class Builder {
                                           face_name(f) + " lists vertex " + vertex_name(repeated_vertex) +
                                               " twice in a row; dropped the repeat",
                                           ""));
-    if (is_duplicate(ring, f)) return;
-
-    // Half the builder's planarity tolerance, so no face we pass on can fail its check. A triangle is
-    // planar; rings with bridges (a vertex twice) go to the builder as loops.
-    if (ring.size() > 3 && distinct == ring.size()) {
-      const Vector3 unit = normalize(normal);
-      Vector3 sum{};
-      for (std::uint32_t v : ring) sum += to_vector(pos[v]);
-      const Point3 centroid = to_point(sum / static_cast<double>(ring.size()));
-      double worst = 0;
-      std::uint32_t worst_vertex = ring[0];
-      for (std::uint32_t v : ring) {
-        const double d = std::abs(dot(pos[v] - centroid, unit));
-        if (d > worst) worst = d, worst_vertex = v;
-      }
-      if (worst > 0.5 * Tolerance::kPlanarity * size) {
-        split_non_planar(f, normal, worst, worst_vertex);
-        return;
-      }
+    canonical_cycle(ring, key_);
+    if (is_duplicate(ring, f, cycle_hash(key_))) return;
+    if (shape.non_planar) {
+      split_non_planar(f, shape.normal, shape.worst, shape.worst_vertex);
+      return;
     }
     push_face(ring, f);
   }
@@ -353,25 +393,13 @@ class Builder {
     return h;
   }
 
-  // The slot of face g's cycle, asked for ahead of its lookup: the lookups of a large table then do not
-  // wait on memory one after another. The hash is kept for is_duplicate, which would compute the same.
-  void prefetch_cycle(std::size_t g) {
-    std::uint32_t ignored = 0;
-    clean_ring(g, other_, ignored);
-    if (other_.empty()) return;
-    canonical_cycle(other_, other_key_);
-    const std::uint64_t h = cycle_hash(other_key_);
-    ahead_[g % kAhead] = {g, h};
-    seen_.prefetch(h);
-  }
-
-  // A face with the same cycle of vertices as an earlier one (either direction) is dropped.
-  bool is_duplicate(const std::vector<std::uint32_t>& ring, std::size_t f) {
-    canonical_cycle(ring, key_);
-    const AheadHash& kept = ahead_[f % kAhead];
-    const std::uint64_t h = kept.face == f ? kept.hash : cycle_hash(key_);
+  // A face with the same cycle of vertices as an earlier one (either direction) is dropped. `hash` is
+  // cycle_hash of the ring's canonical cycle.
+  bool is_duplicate(const std::vector<std::uint32_t>& ring, std::size_t f, std::uint64_t hash) {
     // A fingerprint match is checked against the earlier face's own cycle: equal cycles, not equal hashes.
-    const std::size_t earlier = seen_.insert(h, f, [&](std::size_t e) {
+    bool have_key = false;
+    const std::size_t earlier = seen_.insert(hash, f, [&](std::size_t e) {
+      if (!have_key) canonical_cycle(ring, key_), have_key = true;
       std::uint32_t ignored = 0;
       clean_ring(e, other_, ignored);
       canonical_cycle(other_, other_key_);
@@ -391,14 +419,9 @@ class Builder {
               "the mesh has more than " + std::to_string(options_.max_faces) +
                   " faces after splitting non-planar ones",
               "raise the face limit or simplify the mesh");
-    out_vertices_.insert(out_vertices_.end(), ring.begin(), ring.end());
+    for (std::uint32_t v : ring) out_vertices_.push_back(v);  // (insert calls memcpy for a dozen bytes)
     out_ends_.push_back(out_vertices_.size());
     out_raw_.push_back(f);
-  }
-
-  std::span<const std::uint32_t> built_face(std::size_t k) const {
-    const std::size_t begin = k == 0 ? 0 : out_ends_[k - 1];
-    return {out_vertices_.data() + begin, out_ends_[k] - begin};
   }
 
   void add_line(std::size_t l) {
@@ -520,8 +543,7 @@ class Builder {
                  (unused > 1 ? " and " + std::to_string(unused - 1) + " other vertices are" : " is") +
                  " used by no face or line; left out"));
     for (std::uint32_t& v : out_vertices_) v = index_of[v];
-    for (std::size_t i = 0; i < out_ends_.size(); ++i)
-      builder.add_indexed_polygon(built_face(i), make_tag(TagKind::Face, i));
+    builder.add_indexed_polygons(out_vertices_, out_ends_, make_tag(TagKind::Face, 0));
     for (std::size_t i = 0; i < lines_.size(); ++i)
       builder.add_indexed_line(index_of[lines_[i].a], index_of[lines_[i].b], make_tag(TagKind::Line, i));
 
@@ -569,13 +591,7 @@ class Builder {
   std::vector<std::size_t> out_ends_;
   std::vector<std::size_t> out_raw_;
   std::vector<BuiltLine> lines_;
-  FaceCycleSet seen_;                        // cycle of a kept face → its file face
-  static constexpr std::size_t kAhead = 16;  // faces whose slot is asked for ahead of its lookup
-  struct AheadHash {
-    std::size_t face = ~std::size_t{0};
-    std::uint64_t hash = 0;
-  };
-  AheadHash ahead_[kAhead];  // the hashes prefetch_cycle found, by face modulo kAhead
+  FaceCycleSet seen_;  // cycle of a kept face → its file face
   // One face's ring and buffers, reused.
   std::vector<std::uint32_t> ring_, scratch_, key_, other_, other_key_;
   std::int64_t budget_ = kTriangulationBudget;

@@ -86,8 +86,11 @@ class ExactPointIndex {
 
 // The readers of each text format: fast where they can (false: declined), careful otherwise (throws
 // MeshImportError at the first problem). Both give the same RawMesh for every file the fast one takes.
+// OFF's records are read in parallel chunks of about `chunk_bytes` (split at line ends); tests pass small
+// chunks to hold the split to the careful reader's lines and columns.
+constexpr std::size_t kOffChunkBytes = 128 * 1024;
 bool read_off_fast(std::string_view text, const std::string& name, const MeshImportOptions& options,
-                   RawMesh& raw);
+                   RawMesh& raw, std::size_t chunk_bytes = kOffChunkBytes);
 RawMesh read_off_careful(std::string_view text, const std::string& name, const MeshImportOptions& options);
 bool read_obj_fast(std::string_view text, const std::string& name, const MeshImportOptions& options,
                    RawMesh& raw);
@@ -155,6 +158,8 @@ class LineScanner {
 class FastCursor {
  public:
   explicit FastCursor(std::string_view text, char comment = 0);
+  // A cursor over part of a text that starts at the beginning of line `first_line` (no byte-order mark).
+  FastCursor(std::string_view part, int first_line, char comment);
   // Moves to the first token of the next line holding data, skipping blank lines and comments; false at
   // the end of the text. Call it at the start of the text or at the end of a record's line.
   bool next_record();
@@ -166,6 +171,7 @@ class FastCursor {
   bool at_line_end() const;          // nothing but blanks or a comment before the line end
   int line() const { return line_; }
   int column() const;  // of the next token
+  const char* position() const { return p_; }
 
  private:
   bool boundary(const char* q) const;  // a token may end at q
@@ -174,6 +180,17 @@ class FastCursor {
   int line_ = 1;
   char comment_;
 };
+
+// Splitting a text for readers that work in parallel: parts of about `bytes` each (at least one), every
+// part but the last ending just after a '\n'.
+std::vector<std::string_view> split_at_line_ends(std::string_view text, std::size_t bytes);
+// The lines ('\n'-terminated, the last may lack it) of a part and how many hold data (the lines
+// FastCursor::next_record stops at). False when the part holds a lone '\r', which FastCursor counts as
+// a line end: the counts would then differ from its lines.
+struct PartCounts {
+  std::size_t lines = 0, records = 0;
+};
+bool count_lines_and_records(std::string_view part, char comment, PartCounts& out);
 
 // Parsing of numbers in one line of one file, reporting problems at the token.
 class LineContext {

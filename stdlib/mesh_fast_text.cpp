@@ -4,6 +4,7 @@
 #include <charconv>
 #include <climits>
 #include <cmath>
+#include <cstring>
 
 #include "stdlib/mesh_detail.hpp"
 
@@ -19,6 +20,13 @@ FastCursor::FastCursor(std::string_view text, char comment)
     : p_(text.data()), end_(text.data() + text.size()), line_start_(text.data()), comment_(comment) {
   if (text.starts_with("\xEF\xBB\xBF")) p_ = line_start_ = p_ + 3;  // as LineScanner: columns after it
 }
+
+FastCursor::FastCursor(std::string_view part, int first_line, char comment)
+    : p_(part.data()),
+      end_(part.data() + part.size()),
+      line_start_(part.data()),
+      line_(first_line),
+      comment_(comment) {}
 
 int FastCursor::column() const {
   return static_cast<int>(std::min<std::ptrdiff_t>(p_ - line_start_, INT_MAX - 1)) + 1;
@@ -89,6 +97,40 @@ bool FastCursor::word(std::string_view& out) {
   out = std::string_view(p_, static_cast<std::size_t>(q - p_));
   p_ = q;
   skip_blanks();
+  return true;
+}
+
+std::vector<std::string_view> split_at_line_ends(std::string_view text, std::size_t bytes) {
+  std::vector<std::string_view> parts;
+  std::size_t begin = 0;
+  while (begin < text.size()) {
+    std::size_t end = text.size();
+    if (text.size() - begin > bytes) {
+      const std::size_t newline = text.find('\n', begin + bytes - 1);
+      if (newline != std::string_view::npos) end = newline + 1;
+    }
+    parts.push_back(text.substr(begin, end - begin));
+    begin = end;
+  }
+  if (parts.empty()) parts.push_back(text);
+  return parts;
+}
+
+bool count_lines_and_records(std::string_view part, char comment, PartCounts& out) {
+  out = {};
+  const char* p = part.data();
+  const char* const end = p + part.size();
+  for (const char* cr = p;
+       (cr = static_cast<const char*>(std::memchr(cr, '\r', static_cast<std::size_t>(end - cr)))); ++cr)
+    if (cr + 1 == end || cr[1] != '\n') return false;
+  while (p != end) {
+    while (p != end && is_blank(*p)) ++p;
+    if (p != end && *p != '\n' && *p != '\r' && (comment == 0 || *p != comment)) ++out.records;
+    const auto* newline = static_cast<const char*>(std::memchr(p, '\n', static_cast<std::size_t>(end - p)));
+    if (!newline) break;
+    ++out.lines;
+    p = newline + 1;
+  }
   return true;
 }
 

@@ -1,8 +1,10 @@
 // OFF (Geomview's Object File Format): header keyword with optional prefixes, counts, one vertex and
 // one face per line. Read line by line so that every problem has a line and column.
+#include <algorithm>
 #include <cstdint>
 #include <limits>
 
+#include "core/parallel.hpp"
 #include "stdlib/mesh_detail.hpp"
 
 namespace hlr::stdlib {
@@ -59,7 +61,7 @@ std::size_t read_keyword(const std::vector<Token>& t, const LineContext& ctx) {
 namespace mesh_detail {
 
 bool read_off_fast(std::string_view text, const std::string& name, const MeshImportOptions& options,
-                   RawMesh& raw) {
+                   RawMesh& raw, std::size_t chunk_bytes) {
   FastCursor in(text, '#');
   std::string_view keyword;
   if (!in.next_record() || !in.word(keyword) || keyword != "OFF") return false;
@@ -68,32 +70,86 @@ bool read_off_fast(std::string_view text, const std::string& name, const MeshImp
   if (!in.index(n_vertices) || !in.index(n_faces)) return false;
   if (!in.end_of_line() && !(in.index(n_edges) && in.end_of_line())) return false;
   if (n_vertices > 0xFFFFFFFEull || n_faces > options.max_faces) return false;
+
+  // The records after the header, in parts read side by side: first each part's lines and records are
+  // counted, which numbers its first line and record; record k is vertex k, then the faces follow.
+  const std::string_view body = text.substr(static_cast<std::size_t>(in.position() - text.data()));
+  const std::vector<std::string_view> parts = split_at_line_ends(body, std::max<std::size_t>(chunk_bytes, 1));
+  struct Part {
+    PartCounts counts;
+    bool ok = true;
+    int first_line = 0;
+    std::size_t first_record = 0;
+    RawMesh faces;  // the part's faces (face_vertices, face_ends, face_sources)
+  };
+  std::vector<Part> read(parts.size());
+  const unsigned threads = threads_for(body.size(), kOffChunkBytes, 0);
+  parallel_chunks(parts.size(), threads, [&](std::size_t k) {
+    read[k].ok = count_lines_and_records(parts[k], '#', read[k].counts);
+  });
+  std::size_t records = 0;
+  std::int64_t line = in.line();
+  for (Part& part : read) {
+    if (!part.ok || line > std::numeric_limits<int>::max()) return false;
+    part.first_line = static_cast<int>(line);
+    part.first_record = records;
+    line += static_cast<std::int64_t>(part.counts.lines);
+    records += part.counts.records;
+  }
+  if (records != n_vertices + n_faces) return false;  // the careful reader says which is missing or extra
+
   raw = RawMesh{};
   raw.files = {name};
   raw.vertex_base = 0;
-  for (std::uint64_t k = 0; k < n_vertices; ++k) {
-    if (!in.next_record()) return false;
-    const Source where{0, in.line(), in.column(), -1};
-    Point3 p;
-    if (!in.real(p.x) || !in.real(p.y) || !in.real(p.z)) return false;
-    in.skip_line();  // extras (normal, colour) ignored
-    raw.vertices.push_back({p, where});
-  }
-  for (std::uint64_t k = 0; k < n_faces; ++k) {
-    if (!in.next_record()) return false;
-    const Source where{0, in.line(), in.column(), -1};
-    std::uint64_t n = 0, v = 0;
-    if (!in.index(n)) return false;
-    for (std::uint64_t i = 0; i < n; ++i) {
-      if (!in.index(v) || v >= n_vertices) return false;
-      raw.face_vertices.push_back(static_cast<std::uint32_t>(v));
+  raw.vertices.resize(n_vertices);  // backed by data: the records are there
+  parallel_chunks(parts.size(), threads, [&](std::size_t k) {
+    Part& part = read[k];
+    FastCursor part_in(parts[k], part.first_line, '#');
+    std::size_t r = part.first_record;
+    for (; part.ok && part_in.next_record(); ++r) {
+      const Source where{0, part_in.line(), part_in.column(), -1};
+      if (r < n_vertices) {
+        Point3 p;
+        part.ok = part_in.real(p.x) && part_in.real(p.y) && part_in.real(p.z);
+        part_in.skip_line();  // extras (normal, colour) ignored
+        raw.vertices[r] = {p, where};
+        continue;
+      }
+      std::uint64_t n = 0, v = 0;
+      part.ok = part_in.index(n);
+      for (std::uint64_t i = 0; part.ok && i < n; ++i) {
+        part.ok = part_in.index(v) && v < n_vertices;
+        part.faces.face_vertices.push_back(static_cast<std::uint32_t>(v));
+      }
+      double colour = 0;
+      for (int extras = 0; part.ok && !part_in.end_of_line(); ++extras)
+        part.ok = extras < 4 && part_in.real(colour);
+      part.faces.end_face(where);
     }
-    double colour = 0;
-    for (int extras = 0; !in.end_of_line(); ++extras)
-      if (extras == 4 || !in.real(colour)) return false;
-    raw.end_face(where);
+    part.ok = part.ok && r == part.first_record + part.counts.records;
+  });
+
+  // The parts' faces joined in order, each part copied side by side into its place.
+  std::vector<std::size_t> reference_at(read.size() + 1, 0), face_at(read.size() + 1, 0);
+  for (std::size_t k = 0; k < read.size(); ++k) {
+    if (!read[k].ok) return false;
+    reference_at[k + 1] = reference_at[k] + read[k].faces.face_vertices.size();
+    face_at[k + 1] = face_at[k] + read[k].faces.face_count();
   }
-  return !in.next_record();
+  raw.face_vertices.resize(reference_at.back());
+  raw.face_ends.resize(face_at.back());
+  raw.face_sources.resize(face_at.back());
+  parallel_chunks(read.size(), threads, [&](std::size_t k) {
+    const RawMesh& faces = read[k].faces;
+    std::copy(faces.face_vertices.begin(), faces.face_vertices.end(),
+              raw.face_vertices.begin() + static_cast<std::ptrdiff_t>(reference_at[k]));
+    std::copy(faces.face_sources.begin(), faces.face_sources.end(),
+              raw.face_sources.begin() + static_cast<std::ptrdiff_t>(face_at[k]));
+    for (std::size_t f = 0; f < faces.face_ends.size(); ++f)
+      raw.face_ends[face_at[k] + f] = reference_at[k] + faces.face_ends[f];
+    read[k].faces = RawMesh{};
+  });
+  return true;
 }
 
 RawMesh read_off_careful(std::string_view text, const std::string& name, const MeshImportOptions& options) {
@@ -207,7 +263,10 @@ RawMesh read_off_careful(std::string_view text, const std::string& name, const M
 
 RawMesh mesh_detail::read_off(std::string_view text, const std::string& name,
                               const MeshImportOptions& options) {
-  return fast_or_careful(read_off_fast, read_off_careful, text, name, options);
+  auto fast = [](std::string_view t, const std::string& n, const MeshImportOptions& o, RawMesh& r) {
+    return read_off_fast(t, n, o, r);
+  };
+  return fast_or_careful(fast, read_off_careful, text, name, options);
 }
 
 ImportedMesh import_off(std::string_view text, const std::string& name, const MeshImportOptions& options) {

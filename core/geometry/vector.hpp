@@ -50,9 +50,15 @@ constexpr double dot(Vector3 a, Vector3 b) { return a.x * b.x + a.y * b.y + a.z 
 constexpr Vector3 cross(Vector3 a, Vector3 b) {
   return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
 }
+// std::fmax's result (a NaN loses to a number), inline: the library's fmax is a call.
+constexpr double max_ignoring_nan(double a, double b) { return a > b || b != b ? a : b; }
+// The largest |component|, NaN components ignored (NaN only if all are).
+inline double largest_magnitude(Vector3 v) {
+  return max_ignoring_nan(std::fabs(v.x), max_ignoring_nan(std::fabs(v.y), std::fabs(v.z)));
+}
 // Scaled by the largest component, so it neither overflows beyond 1e154 nor underflows below 1e-154.
 inline double length(Vector3 v) {
-  const double m = std::fmax(std::fabs(v.x), std::fmax(std::fabs(v.y), std::fabs(v.z)));
+  const double m = largest_magnitude(v);
   if (!(m > 0) || !std::isfinite(m)) return m;
   const Vector3 u{v.x / m, v.y / m, v.z / m};
   return m * std::sqrt(dot(u, u));
@@ -61,7 +67,7 @@ inline double distance(Point3 a, Point3 b) { return length(a - b); }
 // Scaled by the largest component first, so vectors beyond 1e154 (whose squared length would overflow)
 // or below 1e-154 (underflow) normalise too.
 inline Vector3 normalize(Vector3 v) {
-  const double m = std::fmax(std::fabs(v.x), std::fmax(std::fabs(v.y), std::fabs(v.z)));
+  const double m = largest_magnitude(v);
   if (!(m > 0) || !std::isfinite(m)) return Vector3{};
   const Vector3 u = v / m;
   return u / std::sqrt(dot(u, u));

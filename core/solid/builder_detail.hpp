@@ -77,11 +77,14 @@ struct VertexTable {
   std::string id(VertexIndex v) const;
 };
 
-// Vertex stage (vertex_table.cpp): non-finite coordinates, duplicate ids and two ids at one position are
-// errors. `input_ids` and `ids` as in SolidBuilder.
+// Vertex stage (vertex_table.cpp): non-finite coordinates and duplicate ids are errors. `input_ids` and
+// `ids` as in SolidBuilder.
 VertexTable resolve_vertices(const std::vector<Point3>& positions, Tags tags,
                              const std::vector<std::uint32_t>& input_ids, const IdTable& ids,
                              const std::function<std::string(VertexIndex)>* label, Diagnostics& diagnostics);
+// Two vertices at one position (within the table's tolerance) are an error, reported with the later one.
+// Reads the table only, so it may run beside the face stages.
+void report_vertex_twins(const VertexTable& table, Tags tags, Diagnostics& diagnostics);
 
 // Closed loops of vertex indices stored back to back.
 struct Loops {

@@ -222,7 +222,7 @@ bool prepare_face(FaceWork& work, bool from_loop, int number, std::int64_t tag, 
   Vector3 outer_normal{};
   for (std::size_t k = 0; k < split_rings.size(); ++k) {
     const std::span<const VertexIndex> l = split_rings[k];
-    rings.push_back(Ring{std::vector<VertexIndex>(l.begin(), l.end()), {}});
+    rings.push_back(Ring{SmallVector<VertexIndex, 4>(l.begin(), l.end()), {}});
     const Vector3 normal = newell_normal(pos, rings.back());
     twice_area.push_back(length(normal));
     if (k == 0 || twice_area[outer] < twice_area[k]) {
@@ -236,11 +236,17 @@ bool prepare_face(FaceWork& work, bool from_loop, int number, std::int64_t tag, 
               twice_area.begin() + static_cast<std::ptrdiff_t>(outer) + 1);
   work.rings_are_loops = !split.shared && outer == 0;
 
-  // Every vertex the face names, for its size and the planarity check.
-  std::vector<VertexIndex>& named = work.scratch;
-  named.clear();
-  for (const Ring& r : rings) named.insert(named.end(), r.vertices.begin(), r.vertices.end());
-  for (const auto& [a, b] : work.lines) named.insert(named.end(), {a, b});
+  // Every vertex the face names, for its size and the planarity check (a one-ring face's are its ring's,
+  // the common case, read in place).
+  std::vector<VertexIndex>& gathered = work.scratch;
+  gathered.clear();
+  if (rings.size() > 1 || !work.lines.empty()) {
+    for (const Ring& r : rings) gathered.insert(gathered.end(), r.vertices.begin(), r.vertices.end());
+    for (const auto& [a, b] : work.lines) gathered.insert(gathered.end(), {a, b});
+  }
+  const std::span<const VertexIndex> named =
+      gathered.empty() ? std::span<const VertexIndex>(rings[0].vertices.data(), rings[0].vertices.size())
+                       : std::span<const VertexIndex>(gathered);
   Point3 lo = pos[named[0]], hi = pos[named[0]];
   for (VertexIndex v : named) {
     lo = {std::min(lo.x, pos[v].x), std::min(lo.y, pos[v].y), std::min(lo.z, pos[v].z)};

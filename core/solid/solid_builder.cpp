@@ -3,6 +3,8 @@
 // rather than stopping at the first.
 #include "core/solid/solid_builder.hpp"
 
+#include <tbb/task_group.h>
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -113,6 +115,32 @@ void SolidBuilder::add_indexed_polygon(std::span<const VertexIndex> ring, std::i
   end_face(tag, false);
 }
 
+void SolidBuilder::add_indexed_polygons(std::span<const VertexIndex> vertices,
+                                        std::span<const std::size_t> ends, std::int64_t first_tag) {
+  for (std::size_t k = 0; k < ends.size(); ++k)
+    if (ends[k] < (k == 0 ? 0 : ends[k - 1]) || ends[k] > vertices.size())
+      throw std::invalid_argument("SolidBuilder::add_indexed_polygons: face ends out of order");
+  const std::size_t ref0 = refs_.size(), ring0 = ring_ends_.size(), face0 = face_ends_.size();
+  if (ref0 + vertices.size() > 0xffffffffu)
+    throw std::length_error("SolidBuilder: too many vertex references");
+  if (ring0 + ends.size() > 0xffffffffu) throw std::length_error("SolidBuilder: too many rings");
+  refs_.resize(ref0 + vertices.size());
+  for (std::size_t i = 0; i < vertices.size(); ++i) refs_[ref0 + i] = index_ref(vertices[i]);
+  ring_ends_.resize(ring0 + ends.size());
+  face_ends_.resize(face0 + ends.size());
+  for (std::size_t k = 0; k < ends.size(); ++k) {
+    ring_ends_[ring0 + k] = static_cast<std::uint32_t>(ref0 + ends[k]);
+    face_ends_[face0 + k] = static_cast<std::uint32_t>(ring0 + k + 1);
+  }
+  if (first_tag != -1 || !face_tags_.empty()) {
+    if (face_tags_.empty()) face_tags_.assign(face0, -1);
+    face_tags_.reserve(face0 + ends.size());
+    for (std::size_t k = 0; k < ends.size(); ++k)
+      face_tags_.push_back(first_tag == -1 ? -1 : first_tag + static_cast<std::int64_t>(k));
+  }
+  face_is_loop_.resize(face0 + ends.size(), false);
+}
+
 void SolidBuilder::add_indexed_line(VertexIndex a, VertexIndex b, std::int64_t tag) {
   const VertexRef ra = index_ref(a);
   lines_.push_back({ra, index_ref(b), tag});
@@ -208,12 +236,27 @@ SolidBuildResult SolidBuilder::build() const {
     }
   });
 
+  // Vertices at one position are looked for while the edges are entered (which takes one thread; they
+  // only read the vertex table), their errors reported in their place: after the vertex stage's, before
+  // the faces'.
+  std::vector<SolidDiagnostic> twin_diagnostics;
+  auto find_twins = [&] {
+    Diagnostics found(twin_diagnostics);
+    report_vertex_twins(vertices, Tags{vertex_tags_}, found);
+  };
+  tbb::task_group twins;
+  if (threads_for(n, 4096, 0) == 1)
+    find_twins();
+  else
+    twins.run(find_twins);
+
   std::vector<bool> valid(ready.begin(), ready.end());
   EdgeEntries edges(refs_.size() / 2 + lines_.size());  // a closed surface names each edge twice
   constexpr std::size_t kAhead = 8;  // faces whose edges are asked for ahead (EdgeEntries::prefetch)
+  std::vector<std::vector<SolidDiagnostic>> face_diagnostics(chunks.size());
   for (std::size_t k = 0; k < chunks.size(); ++k) {
     Chunk& chunk = chunks[k];
-    diagnostics.append(chunk.diagnostics);
+    face_diagnostics[k] = std::move(chunk.diagnostics);
     std::size_t special = 0;
     for (std::size_t f = k * kChunkFaces; f < std::min(n, (k + 1) * kChunkFaces); ++f) {
       if (f + kAhead < n && ready[f + kAhead]) {
@@ -233,6 +276,10 @@ SolidBuildResult SolidBuilder::build() const {
     }
     chunk = Chunk{};
   }
+  twins.wait();
+  diagnostics.append(twin_diagnostics);
+  for (std::vector<SolidDiagnostic>& found : face_diagnostics) diagnostics.append(found);
+
   report_non_manifold(edges, face_tags, vertices, diagnostics);
   if (lines_.empty()) edges.release_index();  // only add_line looks edges up again
 

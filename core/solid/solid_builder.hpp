@@ -80,6 +80,10 @@ class SolidBuilder {
   void add_indexed_face(std::span<const std::vector<VertexIndex>> rings, std::int64_t tag = -1);
   // A face of one ring (no holes), the common case of mesh files: no vector per face.
   void add_indexed_polygon(std::span<const VertexIndex> ring, std::int64_t tag = -1);
+  // Many such faces at once: face k lists vertices[ends[k − 1] .. ends[k]) (from 0 for k = 0) and has the
+  // tag first_tag + k, or -1 when first_tag is -1. The same as adding them one by one.
+  void add_indexed_polygons(std::span<const VertexIndex> vertices, std::span<const std::size_t> ends,
+                            std::int64_t first_tag = -1);
   void add_indexed_line(VertexIndex a, VertexIndex b, std::int64_t tag = -1);
   // How messages name indexed vertices (a mesh file's own vertex numbers, say); by default their number.
   // Only the wording changes: ids given as text still match an indexed vertex by its number.

@@ -240,15 +240,17 @@ VertexTable resolve_vertices(const std::vector<Point3>& positions, Tags tags,
     if (table.usable[i])
       for (int k = 0; k < 3; ++k) extent = std::max(extent, std::abs(table.positions()[i][k]));
   table.tolerance = Tolerance::for_extent(extent);
+  return table;
+}
 
+void report_vertex_twins(const VertexTable& table, Tags tags, Diagnostics& diagnostics) {
   const std::vector<VertexIndex> twin = earlier_twins(table);
   for (std::size_t i = 0; i < twin.size(); ++i)
     if (twin[i] < twin.size())
       diagnostics.error("duplicate-vertex",
                         "vertex '" + table.id(static_cast<VertexIndex>(i)) +
                             "' is at the same position as vertex '" + table.id(twin[i]) + "'",
-                        tags[skipped() ? table.input_of[i] : i]);
-  return table;
+                        tags[table.input_of.empty() ? i : table.input_of[i]]);
 }
 
 }  // namespace hlr::solid_detail

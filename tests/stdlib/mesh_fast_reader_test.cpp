@@ -26,7 +26,7 @@ struct Format {
 
 std::vector<Format> formats() {
   const MeshImportOptions o;
-  return {
+  std::vector<Format> all = {
       {"off",
        [o](std::string_view t, RawMesh& r) { return read_off_fast(t, "m.off", o, r); },
        [o](std::string_view t) { return read_off_careful(t, "m.off", o); },
@@ -35,6 +35,11 @@ std::vector<Format> formats() {
         "3 0 1 3\r\n3 0 3 2\r\n3 1 2 3",
         "\xEF\xBB\xBF# a comment\nOFF\n\n# counts\n4\t4 6 # edges\n0 0 0\n  1 0 0\n0 1 0 # top\n0 0 1\n"
         "3 0 2 1\n3 0 1 3\n\n3 0 3 2\n3 1 2 3\n\n"}},
+      // OFF read in parts of a few bytes (split at nearly every line end), as large files are read.
+      {"off in parts",
+       [o](std::string_view t, RawMesh& r) { return read_off_fast(t, "m.off", o, r, 8); },
+       [o](std::string_view t) { return read_off_careful(t, "m.off", o); },
+       {}},
       {"obj",
        [o](std::string_view t, RawMesh& r) { return read_obj_fast(t, "m.obj", o, r); },
        [o](std::string_view t) { return read_obj_careful(t, "m.obj", o); },
@@ -53,6 +58,8 @@ std::vector<Format> formats() {
         "endsolid\r\nsolid second\nfacet outer loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\nvertex 0 0 1\n"
         "endloop endfacet\nendsolid"}},
   };
+  all[1].common = all[0].common;
+  return all;
 }
 
 std::string mutate(const std::string& text, test::Rng& rng) {

@@ -2,6 +2,8 @@
 // and the same diagnostics as named input with the decimal ids, also when both styles are mixed.
 #include <gtest/gtest.h>
 
+#include <cstdint>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -151,6 +153,41 @@ TEST(SolidIndexedBuilder, PlateWithHoleAndLoopFaceMatchNamedInput) {
   const SolidBuildResult r = indexed.build();
   EXPECT_EQ(with_code(r, "reoriented").size(), 1u) << all_messages(r);  // two faces back to back
   expect_same(r, by_name.build());
+}
+
+// Faces added at once (add_indexed_polygons) build what the same faces added one by one build, tags and
+// messages included: here after a face with a tag and one without, with face 3 wound the wrong way and
+// a face naming vertex 8, which does not exist.
+TEST(SolidIndexedBuilder, PolygonsAtOnceMatchOneByOne) {
+  for (const std::int64_t first_tag : {std::int64_t{-1}, std::int64_t{100}}) {
+    SolidBuilder at_once, one_by_one;
+    for (SolidBuilder* b : {&at_once, &one_by_one})
+      for (const Point3& p : kCube) b->add_vertex(p);
+    for (SolidBuilder* b : {&at_once, &one_by_one}) {
+      b->add_indexed_polygon(kCubeFaces[0][0], 7);
+      b->add_indexed_polygon(kCubeFaces[1][0]);
+    }
+    std::vector<VertexIndex> vertices;
+    std::vector<std::size_t> ends;
+    for (int f = 2; f < 6; ++f) {
+      const std::vector<VertexIndex>& ring = kCubeFaces[f][0];
+      vertices.insert(vertices.end(), ring.begin(), ring.end());
+      ends.push_back(vertices.size());
+      one_by_one.add_indexed_polygon(ring, first_tag == -1 ? -1 : first_tag + f - 2);
+    }
+    vertices.insert(vertices.end(), {0, 1, 8});
+    ends.push_back(vertices.size());
+    one_by_one.add_indexed_polygon(std::vector<VertexIndex>{0, 1, 8}, first_tag == -1 ? -1 : first_tag + 4);
+    at_once.add_indexed_polygons(vertices, ends, first_tag);
+    const SolidBuildResult a = at_once.build(), b = one_by_one.build();
+    EXPECT_FALSE(a.ok());  // vertex 8
+    EXPECT_GE(a.diagnostics.size(), 2u) << all_messages(a);
+    expect_same(a, b);
+  }
+  SolidBuilder bad;
+  const std::vector<VertexIndex> ring = {0, 1, 2};
+  EXPECT_THROW(bad.add_indexed_polygons(ring, std::vector<std::size_t>{2, 1}), std::invalid_argument);
+  EXPECT_THROW(bad.add_indexed_polygons(ring, std::vector<std::size_t>{4}), std::invalid_argument);
 }
 
 }  // namespace
