@@ -1,12 +1,14 @@
 // STL, ASCII and binary. STL lists every triangle with its own three corners, so shared vertices are
 // found by welding exactly equal coordinates; the facet normals are ignored (the winding decides, and
 // the builder makes it consistent).
+#include <algorithm>
 #include <array>
 #include <bit>
 #include <cmath>
 #include <cstring>
 #include <unordered_map>
 
+#include "core/parallel.hpp"
 #include "stdlib/mesh_detail.hpp"
 
 namespace hlr::stdlib {
@@ -41,6 +43,31 @@ std::uint32_t read_u32(const unsigned char* p) {
 }
 double read_f32(const unsigned char* p) { return static_cast<double>(std::bit_cast<float>(read_u32(p))); }
 
+// A corner's coordinates as the file stores them (three floats), -0 as +0: equal keys are equal points
+// (finite floats widen to doubles exactly).
+struct CornerKey {
+  std::uint32_t bits[3];
+  bool operator==(const CornerKey&) const = default;
+};
+
+CornerKey corner_key(const unsigned char* p) {
+  CornerKey k;
+  for (int i = 0; i < 3; ++i) {
+    k.bits[i] = read_u32(p + 4 * i);
+    if (k.bits[i] == 0x80000000u) k.bits[i] = 0;
+  }
+  return k;
+}
+
+std::uint64_t corner_hash(const CornerKey& k) {
+  std::uint64_t h = (std::uint64_t{k.bits[0]} << 32 | k.bits[1]) * 0x9E3779B97F4A7C15ull;
+  h = (h ^ (h >> 29) ^ k.bits[2]) * 0xBF58476D1CE4E5B9ull;
+  return h ^ (h >> 32);
+}
+
+// Binary STL, welded as Welder would weld it corner by corner, but side by side: the corners are sorted
+// into buckets by their hash (in corner order within each bucket), each bucket finds the first corner of
+// every point on its own, and one pass in corner order numbers the points as they first appear.
 RawMesh read_binary(std::string_view bytes, const std::string& name, const MeshImportOptions& options) {
   RawMesh raw;
   raw.files = {name};
@@ -54,25 +81,107 @@ RawMesh read_binary(std::string_view bytes, const std::string& name, const MeshI
          "the header announces " + std::to_string(count) + " triangles, more than the limit of " +
              std::to_string(options.max_faces),
          "raise the face limit or simplify the mesh");
-  // The caller checked that the size is exactly 84 + 50·count, so this reserve is backed by data.
-  raw.face_vertices.reserve(3 * count);
-  raw.face_ends.reserve(count);
-  raw.face_sources.reserve(count);
-  Welder welder(raw, count / 2);  // a closed triangle mesh has about half as many vertices as triangles
-  for (std::uint64_t k = 0; k < count; ++k) {
-    const std::uint64_t offset = 84 + 50 * k;
-    for (int c = 0; c < 3; ++c) {
-      const unsigned char* p = data + offset + 12 + 12 * static_cast<std::uint64_t>(c);
-      const Point3 v{read_f32(p), read_f32(p + 4), read_f32(p + 8)};
-      if (!is_finite(v))
-        fail(name, 0, 0,
-             "triangle " + std::to_string(k + 1) + " (byte offset " + std::to_string(offset) +
-                 ") has a non-finite " + "coordinate in corner " + std::to_string(c + 1) + " (byte offset " +
-                 std::to_string(offset + 12 + 12 * static_cast<std::uint64_t>(c)) + ")",
-             "every coordinate must be a finite number; repair the mesh and export it again");
-      raw.face_vertices.push_back(welder.add(v, {0, 0, 0, static_cast<std::int64_t>(offset)}));
+  // The caller checked that the size is exactly 84 + 50·count, so what follows is backed by data.
+  const std::size_t corners = 3 * count;
+  auto corner_at = [&](std::size_t c) { return data + 84 + 50 * (c / 3) + 12 + 12 * (c % 3); };
+  constexpr std::size_t kPartCorners = 3 * 8192;
+  const std::size_t parts = std::max<std::size_t>(1, (corners + kPartCorners - 1) / kPartCorners);
+  const std::size_t buckets = std::bit_ceil(std::max<std::size_t>(1, corners / 4096));
+  const int bucket_shift = 64 - std::countr_zero(buckets);  // a bucket: the hash's top bits
+  auto bucket_of = [&](std::uint64_t h) {
+    return buckets == 1 ? 0 : static_cast<std::size_t>(h >> bucket_shift);
+  };
+  const unsigned threads = threads_for(count, 16384, 0);
+
+  // Count each part's corners per bucket, and find its first non-finite corner.
+  std::vector<std::uint32_t> counts(parts * buckets, 0);
+  std::vector<std::size_t> first_bad(parts, corners);
+  parallel_chunks(parts, threads, [&](std::size_t k) {
+    std::uint32_t* count_of = counts.data() + k * buckets;
+    for (std::size_t c = k * kPartCorners; c < std::min(corners, (k + 1) * kPartCorners); ++c) {
+      const unsigned char* p = corner_at(c);
+      if (first_bad[k] == corners && !is_finite(Point3{read_f32(p), read_f32(p + 4), read_f32(p + 8)}))
+        first_bad[k] = c;
+      ++count_of[bucket_of(corner_hash(corner_key(p)))];
     }
-    raw.end_face({0, 0, 0, static_cast<std::int64_t>(offset)});
+  });
+  for (const std::size_t c : first_bad) {
+    if (c == corners) continue;
+    const std::uint64_t k = c / 3, offset = 84 + 50 * k;
+    fail(name, 0, 0,
+         "triangle " + std::to_string(k + 1) + " (byte offset " + std::to_string(offset) +
+             ") has a non-finite " + "coordinate in corner " + std::to_string(c % 3 + 1) + " (byte offset " +
+             std::to_string(offset + 12 + 12 * (c % 3)) + ")",
+         "every coordinate must be a finite number; repair the mesh and export it again");
+  }
+
+  // Sort the corners into buckets, in corner order within each (bucket-major, then part, then corner).
+  struct Sorted {
+    CornerKey key;
+    std::uint32_t corner;
+  };
+  std::vector<std::size_t> bucket_begin(buckets + 1, 0);
+  std::vector<std::size_t> at(parts * buckets);
+  {
+    std::size_t sum = 0;
+    for (std::size_t b = 0; b < buckets; ++b) {
+      bucket_begin[b] = sum;
+      for (std::size_t k = 0; k < parts; ++k) at[k * buckets + b] = sum, sum += counts[k * buckets + b];
+    }
+    bucket_begin[buckets] = sum;
+  }
+  counts = {};
+  std::vector<Sorted> sorted(corners);
+  parallel_chunks(parts, threads, [&](std::size_t k) {
+    std::size_t* next = at.data() + k * buckets;
+    for (std::size_t c = k * kPartCorners; c < std::min(corners, (k + 1) * kPartCorners); ++c) {
+      const CornerKey key = corner_key(corner_at(c));
+      sorted[next[bucket_of(corner_hash(key))]++] = {key, static_cast<std::uint32_t>(c)};
+    }
+  });
+
+  // In each bucket, every corner's first corner at the same point (open addressing on the hash's low bits).
+  std::vector<std::uint32_t> first(corners);
+  parallel_chunks(buckets, threads, [&](std::size_t b) {
+    const std::size_t begin = bucket_begin[b], size = bucket_begin[b + 1] - begin;
+    if (size == 0) return;
+    std::vector<std::uint32_t> slots(std::bit_ceil(2 * size), 0);  // entry in `sorted` + 1, 0 = free
+    const std::size_t mask = slots.size() - 1;
+    for (std::size_t i = begin; i < begin + size; ++i) {
+      const Sorted& corner = sorted[i];
+      for (std::size_t s = static_cast<std::size_t>(corner_hash(corner.key)) & mask;; s = (s + 1) & mask) {
+        if (slots[s] == 0) {
+          slots[s] = static_cast<std::uint32_t>(i + 1);
+          first[corner.corner] = corner.corner;
+          break;
+        }
+        const Sorted& earlier = sorted[slots[s] - 1];
+        if (earlier.key == corner.key) {
+          first[corner.corner] = earlier.corner;
+          break;
+        }
+      }
+    }
+  });
+  sorted = {};
+
+  // Number the points in the order they first appear; `first` becomes the corners' vertex numbers.
+  for (std::size_t c = 0; c < corners; ++c) {
+    if (first[c] != c) {
+      first[c] = first[first[c]];
+      continue;
+    }
+    const unsigned char* p = corner_at(c);
+    first[c] = static_cast<std::uint32_t>(raw.vertices.size());
+    raw.vertices.push_back({{read_f32(p) + 0.0, read_f32(p + 4) + 0.0, read_f32(p + 8) + 0.0},  // -0 + 0 = +0
+                            {0, 0, 0, static_cast<std::int64_t>(84 + 50 * (c / 3))}});
+  }
+  raw.face_vertices = std::move(first);
+  raw.face_ends.resize(count);
+  raw.face_sources.resize(count);
+  for (std::size_t k = 0; k < count; ++k) {
+    raw.face_ends[k] = 3 * (k + 1);
+    raw.face_sources[k] = {0, 0, 0, static_cast<std::int64_t>(84 + 50 * k)};
   }
   return raw;
 }

@@ -13,9 +13,12 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <map>
 #include <random>
 #include <string>
 #include <vector>
+
+#include "stdlib/mesh_detail.hpp"
 
 namespace hlr::stdlib {
 namespace {
@@ -226,6 +229,43 @@ TEST(MeshImportStl, WeldsExactlyEqualCoordinatesOnly) {
   // One float step apart is a different vertex: the triangles share only the corner at the origin.
   const std::array<Point3, 3> c = {{{0, 0, 0}, {1, std::nextafter(1.0f, 2.0f), 0}, {0, 1, 0}}};
   expect_shape(import_stl(binary_stl({a, c}, ""), "sq.stl"), 5, 2, 6, false);
+}
+
+// Binary STL is welded in parts and buckets: 20 000 triangles whose corners lie on a small grid (many
+// shared, some at -0), numbered against a map filled corner by corner in file order.
+TEST(MeshImportStl, BinaryWeldingNumbersPointsAsTheyFirstAppear) {
+  std::mt19937 rng(20261202);
+  auto coordinate = [&] {
+    const int i = static_cast<int>(rng() % 41) - 20;
+    return i == 0 && rng() % 2 ? -0.0 : 0.25 * i;
+  };
+  std::vector<std::array<Point3, 3>> triangles(20000);
+  for (auto& t : triangles)
+    for (Point3& p : t) p = {coordinate(), coordinate(), coordinate()};
+  std::map<std::array<double, 3>, std::uint32_t> number;
+  std::vector<Point3> points;
+  std::vector<std::int64_t> offsets;
+  std::vector<std::uint32_t> corners;
+  for (std::size_t k = 0; k < triangles.size(); ++k)
+    for (const Point3& p : triangles[k]) {
+      const std::array<double, 3> key = {p.x + 0.0, p.y + 0.0, p.z + 0.0};
+      const auto [it, fresh] = number.try_emplace(key, static_cast<std::uint32_t>(points.size()));
+      if (fresh) {
+        points.push_back({key[0], key[1], key[2]});
+        offsets.push_back(static_cast<std::int64_t>(84 + 50 * k));
+      }
+      corners.push_back(it->second);
+    }
+  const mesh_detail::RawMesh raw = mesh_detail::read_stl(binary_stl(triangles, ""), "grid.stl", {});
+  ASSERT_EQ(raw.vertices.size(), points.size());
+  for (std::size_t v = 0; v < points.size(); ++v) {
+    EXPECT_EQ(raw.vertices[v].position, points[v]) << v;
+    EXPECT_FALSE(std::signbit(raw.vertices[v].position.x) && raw.vertices[v].position.x == 0) << v;
+    EXPECT_EQ(raw.vertices[v].where.offset, offsets[v]) << v;
+  }
+  EXPECT_EQ(raw.face_vertices, corners);
+  ASSERT_EQ(raw.face_count(), triangles.size());
+  EXPECT_EQ(raw.face_sources.back().offset, static_cast<std::int64_t>(84 + 50 * (triangles.size() - 1)));
 }
 
 TEST(MeshImportAlbers, TetraFromTheThesis) {
