@@ -64,6 +64,11 @@ std::uint32_t ExactPointIndex::insert(Point3 p, std::uint32_t index) {
 
 namespace {
 
+template <typename Vector>
+void release(Vector& v) {
+  Vector().swap(v);  // (clear() and = {} keep the capacity)
+}
+
 constexpr std::size_t kWarningsPerKind = 10;
 // Total work allowed for ear clipping in one import (vertex visits): plenty for real data, a bound for
 // adversarial files with huge non-planar polygons.
@@ -120,7 +125,7 @@ class Builder {
     seen_ = FaceCycleSet(n);
     // Most faces need no repair: they are found side by side in parts (their cycle's hash with them), so
     // that what must go in file order — duplicates, repairs and their warnings — is all that is left.
-    std::vector<std::uint64_t> hashes(n);
+    std::vector<std::uint64_t> hashes(n);  // (released with `plain` before the builder runs)
     std::vector<char> plain(n, 0);
     constexpr std::size_t kPartFaces = 4096;
     parallel_chunks((n + kPartFaces - 1) / kPartFaces, threads_for(n, 2 * kPartFaces, 0), [&](std::size_t k) {
@@ -146,6 +151,7 @@ class Builder {
       clean_ring(f, ring_, ignored);
       if (!is_duplicate(ring_, f, hashes[f])) push_face(ring_, f);
     }
+    release(hashes), release(plain), seen_ = FaceCycleSet();
     for (std::size_t l = 0; l < raw_.lines.size(); ++l) add_line(l);
     if (out_ends_.empty() && lines_.empty())
       fail(raw_.files.back(), 0, 0,
@@ -546,6 +552,11 @@ class Builder {
     builder.add_indexed_polygons(out_vertices_, out_ends_, make_tag(TagKind::Face, 0));
     for (std::size_t i = 0; i < lines_.size(); ++i)
       builder.add_indexed_line(index_of[lines_[i].a], index_of[lines_[i].b], make_tag(TagKind::Line, i));
+    // The builder has its own copies: what only fed it goes before it runs, so that its memory is reused
+    // rather than fresh (messages need the sources, the vertices, raw_of and out_raw_).
+    release(out_vertices_), release(out_ends_), release(canon_), release(positions_), release(index_of),
+        release(used);
+    release(raw_.face_vertices), release(raw_.face_ends);
 
     SolidBuildResult result = builder.build();
     std::size_t errors = 0, inside_out = 0;
