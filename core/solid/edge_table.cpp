@@ -5,6 +5,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "core/parallel.hpp"
 #include "core/solid/builder_detail.hpp"
 
 namespace hlr::solid_detail {
@@ -202,41 +203,49 @@ void build_edge_table(Solid& solid, EdgeEntries& edges, const std::vector<bool>&
   auto kept = [](const EdgeEntry& e) {
     return e.uses == 1 || e.uses == 2 || (e.uses == 0 && (e.marking_face != kNoFace || e.free_line));
   };
-  std::size_t count = 0;
-  for (std::uint32_t i = 0; i < edges.size(); ++i) count += kept(edges[i]);
-  solid.edges.reserve(count);
+  // Each kept entry's edge number (a prefix count), then the edges made side by side: each reads its two
+  // faces' planes, which in a mesh whose faces come in no order are far apart in memory.
+  const std::uint32_t n = edges.size();
   std::vector<std::uint32_t> index_of;  // entry → solid edge, when some entries are dropped
-  if (count != edges.size()) index_of.assign(edges.size(), kNoEdge);
-
-  for (std::uint32_t i = 0; i < edges.size(); edges.release_after(i++)) {
-    const EdgeEntry& entry = edges[i];
-    if (!kept(entry)) continue;
-    SolidEdge e;
-    e.v0 = entry.lo;
-    e.v1 = entry.hi;
-    if (entry.uses == 2) {
-      // left runs v0→v1; after orientation the other use runs v1→v0.
-      const int l = entry.use(0).forward ? 0 : 1;
-      e.left = entry.face[l];
-      e.right = entry.face[1 - l];
-      const DihedralClass c =
-          classify_dihedral(pos[e.v1] - pos[e.v0], solid.planes[static_cast<std::size_t>(e.left)].normal,
-                            solid.planes[static_cast<std::size_t>(e.right)].normal, options.crease_angle_deg);
-      e.kind = c.kind;
-      e.concave = c.concave;
-    } else if (entry.uses == 1) {
-      if (!entry.use(0).forward) std::swap(e.v0, e.v1);  // keep the face on the left
-      e.left = entry.face[0];
-      e.kind = EdgeKind::Boundary;
-    } else if (entry.marking_face != kNoFace) {
-      e.left = e.right = entry.marking_face;
-      e.kind = EdgeKind::Marking;
-    } else {
-      e.kind = EdgeKind::Free;
-    }
-    if (!index_of.empty()) index_of[i] = static_cast<std::uint32_t>(solid.edges.size());
-    solid.edges.push_back(e);
+  std::size_t count = 0;
+  for (std::uint32_t i = 0; i < n; ++i) count += kept(edges[i]);
+  if (count != n) {
+    index_of.assign(n, kNoEdge);
+    for (std::uint32_t i = 0, next = 0; i < n; ++i)
+      if (kept(edges[i])) index_of[i] = next++;
   }
+  solid.edges.resize(count);
+  constexpr std::size_t kPart = 8192;
+  parallel_chunks((n + kPart - 1) / kPart, threads_for(n, 4 * kPart, 0), [&](std::size_t k) {
+    for (std::uint32_t i = static_cast<std::uint32_t>(k * kPart);
+         i < std::min<std::size_t>(n, (k + 1) * kPart); ++i) {
+      const EdgeEntry& entry = edges[i];
+      if (!kept(entry)) continue;
+      SolidEdge& e = solid.edges[index_of.empty() ? i : index_of[i]];
+      e.v0 = entry.lo;
+      e.v1 = entry.hi;
+      if (entry.uses == 2) {
+        // left runs v0→v1; after orientation the other use runs v1→v0.
+        const int l = entry.use(0).forward ? 0 : 1;
+        e.left = entry.face[l];
+        e.right = entry.face[1 - l];
+        const DihedralClass c = classify_dihedral(
+            pos[e.v1] - pos[e.v0], solid.planes[static_cast<std::size_t>(e.left)].normal,
+            solid.planes[static_cast<std::size_t>(e.right)].normal, options.crease_angle_deg);
+        e.kind = c.kind;
+        e.concave = c.concave;
+      } else if (entry.uses == 1) {
+        if (!entry.use(0).forward) std::swap(e.v0, e.v1);  // keep the face on the left
+        e.left = entry.face[0];
+        e.kind = EdgeKind::Boundary;
+      } else if (entry.marking_face != kNoFace) {
+        e.left = e.right = entry.marking_face;
+        e.kind = EdgeKind::Marking;
+      } else {
+        e.kind = EdgeKind::Free;
+      }
+    }
+  });
   edges = EdgeEntries(0);  // free the entries before the last pass
 
   // Rings hold entry numbers; entries that were kept keep their order, so only dropped ones shift them.
