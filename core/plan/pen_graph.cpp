@@ -5,6 +5,7 @@
 #include <cmath>
 #include <numeric>
 
+#include "core/parallel.hpp"
 #include "core/plan/key_sort.hpp"
 #include "core/tolerance.hpp"
 
@@ -66,7 +67,7 @@ void compute_graph_structure(PenGraph& g) {
   for (std::uint32_t k : g.component_odd) g.lift_lower_bound += std::max<std::size_t>(1, k / 2);
 }
 
-PenGraph build_pen_graph(std::span<const GridSegment> segments, double tolerance) {
+PenGraph build_pen_graph(std::span<const GridSegment> segments, double tolerance, unsigned threads) {
   PenGraph g;
   tolerance = std::isfinite(tolerance) ? std::max(0.0, tolerance) : 0.0;
 
@@ -167,70 +168,87 @@ PenGraph build_pen_graph(std::span<const GridSegment> segments, double tolerance
     }
   }
 
-  // 3. Split every piece at the vertices on it.
+  // 3. Split every piece at the vertices on it: parts of the pieces side by side, each with its own list
+  //    of sub-pieces, joined in piece order.
   const double tol2 = tolerance * tolerance;
   const double reach = tolerance * std::sqrt(2.0) +
                        Tolerance::kPlanReachSlack;  // across the minor axis, per unit of major axis
-  std::vector<Split> splits;
-  std::vector<GraphEdge> raw;  // sub-pieces, u < v, possibly repeated
-  raw.reserve(pieces.size() + pieces.size() / 4);
-  auto add_edge = [&](std::uint32_t a, std::uint32_t b) {
-    if (a == b) return;
-    raw.push_back({std::min(a, b), std::max(a, b)});
-  };
-  for (const GraphEdge& piece : pieces) {
-    const GridPoint pa = g.vertices[piece.u], pb = g.vertices[piece.v];
-    const std::int64_t dx = pb.x - pa.x, dy = pb.y - pa.y;
-    const std::int64_t len2 = dx * dx + dy * dy;
-    splits.clear();
-    auto test_cell = [&](std::int64_t cx, std::int64_t cy) {
-      const std::int64_t c = cell_of(cx, cy);
-      if (c < 0) return;
-      for (std::uint32_t i = cell_start[static_cast<std::size_t>(c)],
-                         e = cell_start[static_cast<std::size_t>(c) + 1];
-           i < e; ++i) {
-        const GridPoint pw = cell_point[i];
-        const std::int64_t wx = pw.x - pa.x, wy = pw.y - pa.y;
-        const std::int64_t t = wx * dx + wy * dy;
-        if (t <= 0 || t >= len2) continue;  // also skips the piece's own end points
-        const std::int64_t cross = dx * wy - dy * wx;
-        if (cross != 0) {
-          const double cr = static_cast<double>(cross);
-          if (cr * cr > tol2 * static_cast<double>(len2)) continue;
-          if (raw_degree[cell_vertex[i]] != 1) continue;  // the tolerance is for loose ends only
-        }
-        splits.push_back({t, cell_vertex[i]});
-      }
+  constexpr std::size_t kPartPieces = 4096;
+  std::vector<std::vector<GraphEdge>> part_raw((pieces.size() + kPartPieces - 1) / kPartPieces);
+  parallel_chunks(part_raw.size(), threads_for(pieces.size(), 2 * kPartPieces, threads), [&](std::size_t k) {
+    std::vector<Split> splits;
+    std::vector<GraphEdge>& raw = part_raw[k];  // sub-pieces, u < v, possibly repeated
+    const std::size_t begin = k * kPartPieces, end = std::min(pieces.size(), begin + kPartPieces);
+    raw.reserve((end - begin) + (end - begin) / 4);
+    auto add_edge = [&](std::uint32_t a, std::uint32_t b) {
+      if (a == b) return;
+      raw.push_back({std::min(a, b), std::max(a, b)});
     };
-    // Walk the cells within `tolerance` of the piece, one cell column (or row) of the major axis at a time.
-    const bool x_major = std::llabs(dx) >= std::llabs(dy);
-    const double a0 = static_cast<double>(x_major ? pa.x : pa.y),
-                 a1 = static_cast<double>(x_major ? pb.x : pb.y);
-    const double b0 = static_cast<double>(x_major ? pa.y : pa.x),
-                 b1 = static_cast<double>(x_major ? pb.y : pb.x);
-    const double lo = std::min(a0, a1), hi = std::max(a0, a1);
-    const double slope = (b1 - b0) / (a1 - a0);  // |slope| ≤ 1; a1 ≠ a0 on the major axis
-    const std::int64_t c_first = floor_div(lo - tolerance, cell), c_last = floor_div(hi + tolerance, cell);
-    for (std::int64_t c = c_first; c <= c_last; ++c) {
-      const double s0 = std::clamp(static_cast<double>(c) * cell, lo, hi);
-      const double s1 = std::clamp(static_cast<double>(c + 1) * cell, lo, hi);
-      const double m0 = b0 + slope * (s0 - a0), m1 = b0 + slope * (s1 - a0);
-      const std::int64_t r_first = floor_div(std::min(m0, m1) - reach, cell);
-      const std::int64_t r_last = floor_div(std::max(m0, m1) + reach, cell);
-      for (std::int64_t r = r_first; r <= r_last; ++r) x_major ? test_cell(c, r) : test_cell(r, c);
+    for (std::size_t pi = begin; pi < end; ++pi) {
+      const GraphEdge& piece = pieces[pi];
+      const GridPoint pa = g.vertices[piece.u], pb = g.vertices[piece.v];
+      const std::int64_t dx = pb.x - pa.x, dy = pb.y - pa.y;
+      const std::int64_t len2 = dx * dx + dy * dy;
+      splits.clear();
+      auto test_cell = [&](std::int64_t cx, std::int64_t cy) {
+        const std::int64_t c = cell_of(cx, cy);
+        if (c < 0) return;
+        for (std::uint32_t i = cell_start[static_cast<std::size_t>(c)],
+                           e = cell_start[static_cast<std::size_t>(c) + 1];
+             i < e; ++i) {
+          const GridPoint pw = cell_point[i];
+          const std::int64_t wx = pw.x - pa.x, wy = pw.y - pa.y;
+          const std::int64_t t = wx * dx + wy * dy;
+          if (t <= 0 || t >= len2) continue;  // also skips the piece's own end points
+          const std::int64_t cross = dx * wy - dy * wx;
+          if (cross != 0) {
+            const double cr = static_cast<double>(cross);
+            if (cr * cr > tol2 * static_cast<double>(len2)) continue;
+            if (raw_degree[cell_vertex[i]] != 1) continue;  // the tolerance is for loose ends only
+          }
+          splits.push_back({t, cell_vertex[i]});
+        }
+      };
+      // Walk the cells within `tolerance` of the piece, one cell column (or row) of the major axis at a time.
+      const bool x_major = std::llabs(dx) >= std::llabs(dy);
+      const double a0 = static_cast<double>(x_major ? pa.x : pa.y),
+                   a1 = static_cast<double>(x_major ? pb.x : pb.y);
+      const double b0 = static_cast<double>(x_major ? pa.y : pa.x),
+                   b1 = static_cast<double>(x_major ? pb.y : pb.x);
+      const double lo = std::min(a0, a1), hi = std::max(a0, a1);
+      const double slope = (b1 - b0) / (a1 - a0);  // |slope| ≤ 1; a1 ≠ a0 on the major axis
+      const std::int64_t c_first = floor_div(lo - tolerance, cell), c_last = floor_div(hi + tolerance, cell);
+      for (std::int64_t c = c_first; c <= c_last; ++c) {
+        const double s0 = std::clamp(static_cast<double>(c) * cell, lo, hi);
+        const double s1 = std::clamp(static_cast<double>(c + 1) * cell, lo, hi);
+        const double m0 = b0 + slope * (s0 - a0), m1 = b0 + slope * (s1 - a0);
+        const std::int64_t r_first = floor_div(std::min(m0, m1) - reach, cell);
+        const std::int64_t r_last = floor_div(std::max(m0, m1) + reach, cell);
+        for (std::int64_t r = r_first; r <= r_last; ++r) x_major ? test_cell(c, r) : test_cell(r, c);
+      }
+      if (splits.empty()) {
+        add_edge(piece.u, piece.v);
+        continue;
+      }
+      std::sort(splits.begin(), splits.end(),
+                [](const Split& x, const Split& y) { return x.t != y.t ? x.t < y.t : x.vertex < y.vertex; });
+      std::uint32_t prev = piece.u;
+      for (const Split& sp : splits) {
+        add_edge(prev, sp.vertex);
+        prev = sp.vertex;
+      }
+      add_edge(prev, piece.v);
     }
-    if (splits.empty()) {
-      add_edge(piece.u, piece.v);
-      continue;
+  });
+  std::vector<GraphEdge> raw;
+  {
+    std::size_t total = 0;
+    for (const auto& r : part_raw) total += r.size();
+    raw.reserve(total);
+    for (auto& r : part_raw) {
+      raw.insert(raw.end(), r.begin(), r.end());
+      std::vector<GraphEdge>().swap(r);
     }
-    std::sort(splits.begin(), splits.end(),
-              [](const Split& x, const Split& y) { return x.t != y.t ? x.t < y.t : x.vertex < y.vertex; });
-    std::uint32_t prev = piece.u;
-    for (const Split& sp : splits) {
-      add_edge(prev, sp.vertex);
-      prev = sp.vertex;
-    }
-    add_edge(prev, piece.v);
   }
 
   // 4. Deduplicate: bucket the sub-pieces by their lower vertex (counting sort, stable), drop repeats of

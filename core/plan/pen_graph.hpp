@@ -47,8 +47,10 @@ struct PenGraph {
   std::size_t lift_lower_bound = 0;          // Σ over components of max(1, odd / 2)
 };
 
-// Builds the graph of non-degenerate segments (a ≠ b, coordinates within ±kMaxGridCoordinate).
-PenGraph build_pen_graph(std::span<const GridSegment> segments, double tolerance);
+// Builds the graph of non-degenerate segments (a ≠ b, coordinates within ±kMaxGridCoordinate). `threads`
+// as for parallel_chunks (core/parallel.hpp): 1 on this thread, 0 the caller's arena; the same graph for
+// any value.
+PenGraph build_pen_graph(std::span<const GridSegment> segments, double tolerance, unsigned threads = 1);
 
 // Fills degree, component, odd, component_odd and lift_lower_bound from vertices and edges.
 void compute_graph_structure(PenGraph& g);

@@ -224,7 +224,7 @@ PenPlan plan_pen_strokes(const std::vector<PlotPiece>& pieces, const PlanOptions
   st.pieces = pieces.size();
   std::vector<Group> groups = snap_groups(pieces, grid, st.dropped_pieces);
   for (Group& g : groups) {
-    g.graph = plan::build_pen_graph(g.segments, options.merge_tolerance_grid);
+    g.graph = plan::build_pen_graph(g.segments, options.merge_tolerance_grid, options.threads >= 2 ? 0 : 1);
     st.merged_pieces += g.graph.edges.size();
     st.lift_lower_bound += g.graph.lift_lower_bound;
     st.components += g.graph.components;
