@@ -6,6 +6,7 @@
 #include <numeric>
 #include <utility>
 
+#include "core/parallel.hpp"
 #include "core/tolerance.hpp"
 
 namespace hlr::plan {
@@ -169,8 +170,8 @@ void KdTree::k_nearest(Pt q, std::size_t k, std::uint32_t exclude, std::vector<s
   for (std::size_t i = 0; i < have; ++i) out.push_back(best[i].i);
 }
 
-void all_k_nearest(const std::vector<Pt>& points, std::size_t k, std::vector<std::uint32_t>& out,
-                   bool exact) {
+void all_k_nearest(const std::vector<Pt>& points, std::size_t k, std::vector<std::uint32_t>& out, bool exact,
+                   unsigned threads) {
   constexpr std::uint32_t kNone = KdTree::kNone;
   const std::size_t n = points.size();
   k = std::min<std::size_t>(k, 64);
@@ -228,9 +229,7 @@ void all_k_nearest(const std::vector<Pt>& points, std::size_t k, std::vector<std
   // points it leaves undecided are finished without limits when few, else by a k-d tree.
   constexpr std::int64_t kMaxRing = 8;
   constexpr std::uint32_t kCrowded = 400;
-  std::vector<std::uint32_t> undecided;  // positions in cell order
-  Scored best[64];
-  auto search = [&](std::size_t at, bool limited) {
+  auto search = [&](std::size_t at, bool limited, Scored* best) {
     const std::uint32_t i = ci[at];
     const Pt q = cp[at];
     const std::int64_t cx = cx_of(q.x), cy = cy_of(q.y);
@@ -268,10 +267,20 @@ void all_k_nearest(const std::vector<Pt>& points, std::size_t k, std::vector<std
     for (std::size_t m = 0; m < have; ++m) out[i * k + m] = best[m].i;
     return true;
   };
-  for (std::size_t at = 0; at < n; ++at)
-    if (!search(at, true)) undecided.push_back(static_cast<std::uint32_t>(at));
+  // The first pass in parts of the points side by side (each query writes only its own list), the
+  // undecided joined in part order.
+  constexpr std::size_t kPart = 8192;
+  std::vector<std::vector<std::uint32_t>> part_undecided((n + kPart - 1) / kPart);
+  parallel_chunks(part_undecided.size(), threads_for(n, 2 * kPart, threads), [&](std::size_t part) {
+    Scored best[64];
+    for (std::size_t at = part * kPart; at < std::min(n, (part + 1) * kPart); ++at)
+      if (!search(at, true, best)) part_undecided[part].push_back(static_cast<std::uint32_t>(at));
+  });
+  std::vector<std::uint32_t> undecided;  // positions in cell order
+  for (const auto& u : part_undecided) undecided.insert(undecided.end(), u.begin(), u.end());
   if (undecided.size() <= n / 64 + 16) {
-    for (std::uint32_t at : undecided) search(at, false);
+    Scored best[64];
+    for (std::uint32_t at : undecided) search(at, false, best);
   } else {
     const KdTree tree(points);
     std::vector<std::uint32_t> found;

@@ -72,8 +72,9 @@ class KdTree {
 // a point in a crowded neighbourhood, or whose k-th neighbour lies beyond a few rings, asks a k-d tree. Same
 // result as KdTree::k_nearest for every point. With `exact` false the search stops as soon as k points are
 // found in the rings 0…r around the point's cell (r ≥ 1): nearly always the true k nearest, occasionally a
-// slightly farther one — candidate lists for heuristics, at about half the cost.
+// slightly farther one — candidate lists for heuristics, at about half the cost. `threads` as for
+// parallel_chunks (core/parallel.hpp); the same lists for any value.
 void all_k_nearest(const std::vector<Pt>& points, std::size_t k, std::vector<std::uint32_t>& out,
-                   bool exact = true);
+                   bool exact = true, unsigned threads = 1);
 
 }  // namespace hlr::plan

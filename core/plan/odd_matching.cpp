@@ -55,7 +55,7 @@ Pairs exact_matching(const std::vector<Pt>& p) {
 }
 
 Pairs heuristic_matching(const std::vector<Pt>& p, std::vector<std::uint32_t>* neighbours,
-                         std::size_t list_length) {
+                         std::size_t list_length, unsigned threads) {
   const std::uint32_t n = static_cast<std::uint32_t>(p.size());
   constexpr std::uint32_t kNone = ~0u;
   constexpr std::size_t kNeighbours = kMatchingNeighbours;
@@ -64,7 +64,7 @@ Pairs heuristic_matching(const std::vector<Pt>& p, std::vector<std::uint32_t>* n
   // Neighbour lists (also used by the improvement pass); the matching reads the first kNeighbours of each.
   // Exact: the approximate lists (a few rings of a grid) cost the city 10³ a fifth of its pen-up saving.
   std::vector<std::uint32_t> nbr;
-  all_k_nearest(p, stride, nbr, true);
+  all_k_nearest(p, stride, nbr, true, threads);
   // Candidate pairs, each once (from its lower end, or from the end whose list holds the other only),
   // sorted by length then by index: the key packs the length's float bits above the candidate's number.
   auto listed = [&](std::uint32_t a, std::uint32_t b) {
@@ -150,12 +150,12 @@ Pairs heuristic_matching(const std::vector<Pt>& p, std::vector<std::uint32_t>* n
 }  // namespace
 
 Pairs min_weight_matching(const std::vector<Pt>& points, std::vector<std::uint32_t>* neighbours,
-                          std::size_t list_length) {
+                          std::size_t list_length, unsigned threads) {
   if (neighbours) neighbours->clear();
   if (points.size() % 2) throw std::invalid_argument("min_weight_matching: odd point count");
   if (points.empty()) return {};
   if (points.size() <= kExactMatchingLimit) return exact_matching(points);
-  return heuristic_matching(points, neighbours, list_length);
+  return heuristic_matching(points, neighbours, list_length, threads);
 }
 
 double exact_matching_weight(const std::vector<Pt>& points) {

@@ -21,11 +21,12 @@ inline constexpr std::size_t kExactMatchingLimit = 16;
 // `neighbours` (optional): beyond kExactMatchingLimit points, receives the lists the heuristic searched, of
 // length max(list_length, kMatchingNeighbours) (as all_k_nearest(points, that length, ·)); the
 // heuristic uses the first kMatchingNeighbours of each, and a longer list serves the order's local search
-// (improve_order) without a second search. Otherwise cleared.
+// (improve_order) without a second search. Otherwise cleared. `threads` as for all_k_nearest: the same
+// pairs for any value.
 inline constexpr std::size_t kMatchingNeighbours = 6;
 std::vector<std::pair<std::uint32_t, std::uint32_t>> min_weight_matching(
     const std::vector<Pt>& points, std::vector<std::uint32_t>* neighbours = nullptr,
-    std::size_t list_length = kMatchingNeighbours);
+    std::size_t list_length = kMatchingNeighbours, unsigned threads = 1);
 
 // The exact optimum's weight, by the same dynamic programme (n ≤ 20), for tests.
 double exact_matching_weight(const std::vector<Pt>& points);

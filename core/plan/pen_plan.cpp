@@ -1,5 +1,7 @@
 #include "core/plan/pen_plan.hpp"
 
+#include <tbb/parallel_invoke.h>
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -7,8 +9,6 @@
 #include <map>
 #include <stdexcept>
 #include <utility>
-
-#include <tbb/parallel_invoke.h>
 
 #include "core/plan/euler_strokes.hpp"
 #include "core/plan/odd_matching.hpp"
@@ -84,19 +84,22 @@ struct Sequence {
 std::size_t shared_list_length(const PenGraph& g) {
   return std::max(plan::kMatchingNeighbours, plan::improve_list_length(g.odd.size() / 2));
 }
-std::vector<plan::VertexPair> matched_pairing(const PenGraph& g, std::vector<std::uint32_t>& neighbours) {
+std::vector<plan::VertexPair> matched_pairing(const PenGraph& g, std::vector<std::uint32_t>& neighbours,
+                                              unsigned threads) {
   std::vector<Pt> points;
   points.reserve(g.odd.size());
   for (std::uint32_t v : g.odd)
     points.push_back({static_cast<double>(g.vertices[v].x), static_cast<double>(g.vertices[v].y)});
   std::vector<plan::VertexPair> pairs;
-  for (const auto& [i, j] : plan::min_weight_matching(points, &neighbours, shared_list_length(g)))
+  for (const auto& [i, j] : plan::min_weight_matching(points, &neighbours, shared_list_length(g), threads))
     pairs.emplace_back(g.odd[i], g.odd[j]);
   return pairs;
 }
 
-// `budget` (Optimized): clock time left for the improvement passes, shared by the groups in turn.
-Sequence plan_sequence(const std::vector<Group>& groups, Pt home, bool optimize, Clock::duration budget) {
+// `budget` (Optimized): clock time left for the improvement passes, shared by the groups in turn. `threads`
+// as for parallel_chunks (the same sequence for any value).
+Sequence plan_sequence(const std::vector<Group>& groups, Pt home, bool optimize, Clock::duration budget,
+                       unsigned threads) {
   Sequence out;
   Pt here = home;
   for (std::size_t gi = 0; gi < groups.size(); ++gi) {
@@ -104,8 +107,8 @@ Sequence plan_sequence(const std::vector<Group>& groups, Pt home, bool optimize,
     const TourEnds ends{here, home, gi + 1 < groups.size()};
     GroupStrokes gs;
     std::vector<std::uint32_t> neighbours;
-    gs.strokes =
-        plan::euler_strokes(g, optimize ? matched_pairing(g, neighbours) : plan::sequential_pairing(g));
+    gs.strokes = plan::euler_strokes(
+        g, optimize ? matched_pairing(g, neighbours, threads) : plan::sequential_pairing(g));
     if (!optimize) {
       plan::order_greedy(gs.strokes, g.vertices, ends);
     } else if (plan::order_exact(gs.strokes, g.vertices, ends)) {
@@ -223,8 +226,9 @@ PenPlan plan_pen_strokes(const std::vector<PlotPiece>& pieces, const PlanOptions
   PlanStats& st = plan.stats;
   st.pieces = pieces.size();
   std::vector<Group> groups = snap_groups(pieces, grid, st.dropped_pieces);
+  const unsigned threads = options.threads >= 2 ? 0 : 1;  // 0: parts as tasks of the caller's arena
   for (Group& g : groups) {
-    g.graph = plan::build_pen_graph(g.segments, options.merge_tolerance_grid, options.threads >= 2 ? 0 : 1);
+    g.graph = plan::build_pen_graph(g.segments, options.merge_tolerance_grid, threads);
     st.merged_pieces += g.graph.edges.size();
     st.lift_lower_bound += g.graph.lift_lower_bound;
     st.components += g.graph.components;
@@ -245,9 +249,9 @@ PenPlan plan_pen_strokes(const std::vector<PlotPiece>& pieces, const PlanOptions
       // and the local search have least to work with): built beside the optimized one when allowed (as a
       // task of the caller's arena).
       Sequence optimized;
-      auto best = [&] { optimized = plan_sequence(groups, home, true, budget); };
+      auto best = [&] { optimized = plan_sequence(groups, home, true, budget, threads); };
       if (st.merged_pieces <= kGreedyCheckEdges) {
-        auto greedy = [&] { chosen = plan_sequence(groups, home, false, budget); };
+        auto greedy = [&] { chosen = plan_sequence(groups, home, false, budget, 1); };
         if (options.threads >= 2) {
           tbb::parallel_invoke(greedy, best);
         } else {
@@ -264,7 +268,7 @@ PenPlan plan_pen_strokes(const std::vector<PlotPiece>& pieces, const PlanOptions
       else
         st.kept_greedy = true;
     } else {
-      chosen = plan_sequence(groups, home, false, budget);
+      chosen = plan_sequence(groups, home, false, budget, threads);
     }
     emit_strokes(groups, chosen, grid, plan.strokes);
   }

@@ -52,8 +52,9 @@ struct PlanOptions {
   // moved off the line they meet (by up to √2 units). 0 joins only vertices exactly on the snapped piece.
   // See core/plan/pen_graph.hpp.
   double merge_tolerance_grid = 1.5;
-  // Optimized: with 2 or more, the greedy plan it is compared with (see kGreedyCheckEdges) is built on a
-  // second thread while the optimized one is built. The result is the same for any value.
+  // With 2 or more: the drawing graph's splitting and the matching's neighbour search run in parts as
+  // tasks of the caller's arena, and (Optimized) the greedy plan it is compared with (see
+  // kGreedyCheckEdges) is built beside the optimized one. The result is the same for any value.
   int threads = 1;
 };
 

@@ -111,6 +111,28 @@ TEST(PenGraph, DegenerateAndOutOfRangeDropped) {
 
 // The thesis's six-point drawing (Diagram 1.1): hexagon 1…6 with chords 1-3 and 4-6; odd points 1, 3, 4,
 // 6; 6 candidate pen-up lines, 3 pairings, the best pairs neighbours (1-6, 3-4).
+// The graph is the same whether its pieces are split in parts side by side or on one thread: 30 000
+// short pieces on a small lattice (many overlaps, T-junctions and loose ends near other pieces).
+TEST(PenGraph, SameGraphOnAnyNumberOfThreads) {
+  plan_test::Rng r(31);
+  std::vector<GridSegment> segments;
+  for (int i = 0; i < 30000; ++i) {
+    const GridPoint a{r.integer(0, 400), r.integer(0, 400)};
+    const GridPoint b{a.x + r.integer(-12, 12), a.y + r.integer(-12, 12)};
+    segments.push_back({a, b});
+  }
+  const PenGraph one = build_pen_graph(segments, 1.5, 1), parts = build_pen_graph(segments, 1.5, 0);
+  ASSERT_EQ(one.vertices.size(), parts.vertices.size());
+  for (std::size_t v = 0; v < one.vertices.size(); ++v) EXPECT_TRUE(one.vertices[v] == parts.vertices[v]);
+  ASSERT_EQ(one.edges.size(), parts.edges.size());
+  for (std::size_t e = 0; e < one.edges.size(); ++e) {
+    EXPECT_EQ(one.edges[e].u, parts.edges[e].u);
+    EXPECT_EQ(one.edges[e].v, parts.edges[e].v);
+  }
+  EXPECT_EQ(one.odd, parts.odd);
+  EXPECT_EQ(one.lift_lower_bound, parts.lift_lower_bound);
+}
+
 TEST(PenGraph, ThesisSixPointDrawing) {
   std::vector<GridPoint> p(7);
   for (int i = 1; i <= 6; ++i) {

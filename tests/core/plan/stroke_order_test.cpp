@@ -188,6 +188,21 @@ TEST(StrokeOrder, ExactIsOptimal) {
   }
 }
 
+// The neighbour lists are the same whether the queries run in parts side by side or on one thread
+// (40 000 points: several parts), exact and approximate.
+TEST(KdTree, AllKNearestSameOnAnyNumberOfThreads) {
+  Rng r(23);
+  std::vector<Pt> p;
+  for (int i = 0; i < 40000; ++i)
+    p.push_back({static_cast<double>(r.integer(0, 3000)), static_cast<double>(r.integer(0, 2000))});
+  for (const bool exact : {true, false}) {
+    std::vector<std::uint32_t> one, parts;
+    all_k_nearest(p, 8, one, exact, 1);
+    all_k_nearest(p, 8, parts, exact, 0);
+    EXPECT_EQ(one, parts) << (exact ? "exact" : "approximate");
+  }
+}
+
 TEST(KdTree, NearestAndKNearestMatchLinearScan) {
   Rng r(17);
   for (int trial = 0; trial < 20; ++trial) {
