@@ -169,7 +169,7 @@ PenGraph build_pen_graph(std::span<const GridSegment> segments, double tolerance
   }
 
   // 3. Split every piece at the vertices on it: parts of the pieces side by side, each with its own list
-  //    of sub-pieces, joined in piece order.
+  //    of sub-pieces, read in piece order below.
   const double tol2 = tolerance * tolerance;
   const double reach = tolerance * std::sqrt(2.0) +
                        Tolerance::kPlanReachSlack;  // across the minor axis, per unit of major axis
@@ -240,30 +240,24 @@ PenGraph build_pen_graph(std::span<const GridSegment> segments, double tolerance
       add_edge(prev, piece.v);
     }
   });
-  std::vector<GraphEdge> raw;
-  {
-    std::size_t total = 0;
-    for (const auto& r : part_raw) total += r.size();
-    raw.reserve(total);
-    for (auto& r : part_raw) {
-      raw.insert(raw.end(), r.begin(), r.end());
-      std::vector<GraphEdge>().swap(r);
-    }
-  }
-
-  // 4. Deduplicate: bucket the sub-pieces by their lower vertex (counting sort, stable), drop repeats of
-  //    the upper one within each bucket. Edges come out ordered by (u, first appearance).
+  // 4. Deduplicate: bucket the sub-pieces by their lower vertex (counting sort, stable, read from the
+  //    parts in order), drop repeats of the upper one within each bucket. Edges come out ordered by
+  //    (u, first appearance).
   {
     std::vector<std::uint32_t> start(nv + 1, 0);
-    for (const GraphEdge& e : raw) ++start[e.u + 1];
+    for (const std::vector<GraphEdge>& raw : part_raw)
+      for (const GraphEdge& e : raw) ++start[e.u + 1];
     for (std::size_t v = 0; v < nv; ++v) start[v + 1] += start[v];
-    std::vector<std::uint32_t> upper(raw.size());
+    std::vector<std::uint32_t> upper(start[nv]);
     {
       std::vector<std::uint32_t> fill(start.begin(), start.end() - 1);
-      for (const GraphEdge& e : raw) upper[fill[e.u]++] = e.v;
+      for (std::vector<GraphEdge>& raw : part_raw) {
+        for (const GraphEdge& e : raw) upper[fill[e.u]++] = e.v;
+        std::vector<GraphEdge>().swap(raw);
+      }
     }
     std::vector<std::uint32_t> last_seen(nv, ~0u);  // last_seen[v] == u: edge (u, v) already taken
-    g.edges.reserve(raw.size());
+    g.edges.reserve(upper.size());
     for (std::uint32_t u = 0; u < nv; ++u)
       for (std::uint32_t i = start[u]; i < start[u + 1]; ++i) {
         const std::uint32_t v = upper[i];
