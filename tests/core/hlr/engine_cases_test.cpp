@@ -17,6 +17,7 @@
 #include "core/camera/lookat_camera.hpp"
 #include "core/camera/ortho_camera.hpp"
 #include "core/hlr/render_frame.hpp"
+#include "core/solid/solid_builder.hpp"
 #include "stdlib/generators.hpp"
 
 namespace hlr {
@@ -329,6 +330,36 @@ TEST(EngineCasesHole, EdgeBehindAPlateIsVisibleThroughTheHolePerspective) {
 }
 
 // ---- interpenetrating boxes ----------------------------------------------------------------------------
+
+// ---- faces meeting at a corner ------------------------------------------------------------------------
+
+Solid triangle(Point3 a, Point3 b, Point3 c) {
+  SolidBuilder builder;
+  const VertexIndex ia = builder.add_vertex(a), ib = builder.add_vertex(b), ic = builder.add_vertex(c);
+  const std::vector<VertexIndex> ring{ia, ib, ic};
+  builder.add_indexed_polygon(ring);
+  SolidBuildResult built = builder.build();
+  EXPECT_TRUE(built.ok());
+  return built.ok() ? std::move(*built.solid) : stdlib::box({0, 0, 0}, {1, 1, 1});
+}
+
+// Two triangles with the corner V = (0, 0, 0) in common, seen from above (orthographic, picture = (x, y)):
+// A = V (2, 0, 0) (0, 2, 0) flat, B = V (2, −1, 1) (2, 1, 1) rising over A's first edge (B's plane is
+// z = x/2). B's angle at V spans the bearings (2, −1) to (2, 1), so A's edge V → (2, 0, 0) runs inside it
+// and under B: hidden whole. A's edge V → (0, 2, 0) leaves V outside B's angle: whole. A's edge
+// (2, 0, 0) → (0, 2, 0) (x + y = 2) passes under B until it crosses B's side y = x/2 at (4/3, 2/3, 0). B's
+// three edges are whole. (Edges that share an end point with a face are the commonest test in a mesh.)
+TEST(EngineCasesCorner, FacesSharingACornerHideWhatRunsInsideTheirAngle) {
+  const Point3 v{0, 0, 0};
+  const Scene scene = scene_of({triangle(v, {2, 0, 0}, {0, 2, 0}), triangle(v, {2, -1, 1}, {2, 1, 1})});
+  const Camera cam = ortho({0.5, 0.5, 10}, {0.5, 0.5, 0}, {0, 1, 0}, 6);
+  const FrameResult r = render_frame(scene, cam);
+  expect_sane(r, cam, "corner");
+  std::vector<Expected> want = loop(1, {v, {2, -1, 1}, {2, 1, 1}});
+  want.push_back({0, v, {0, 2, 0}});
+  want.push_back({0, {4.0 / 3, 2.0 / 3, 0}, {0, 2, 0}});
+  expect_segments(r, want, 1e-12, "corner");
+}
 
 // A = [−4, 4]² × [0, 2]; P = [−0.5, 0.5] × [−1, 1] × [1, 3] pokes out of A's top. Its side faces cross the
 // top along the rectangle x = ±0.5, y = ±1, z = 2. From an eye at (+x, −y, +z) P's faces x = 0.5 and y = −1
