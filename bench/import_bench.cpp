@@ -10,11 +10,15 @@
 #include <cstring>
 #include <filesystem>
 #include <map>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <utility>
 
 #include "bench/command_main.hpp"
+#include "core/camera/lookat_camera.hpp"
+#include "core/geometry/box3.hpp"
+#include "core/hlr/render_frame.hpp"
 #include "stdlib/generators.hpp"
 #include "stdlib/mesh_import.hpp"
 
@@ -161,6 +165,67 @@ const bool kFilesRegistered = [] {
                                                            static_cast<std::int64_t>(bytes));
                                  })
         ->Unit(benchmark::kMillisecond);
+    // The search for the mesh's faces that cross each other (Solid::self_crossings, the first frame's
+    // largest single cost on a scan), on a fresh copy each iteration (the copy is not timed).
+    benchmark::RegisterBenchmark(
+        ("FileSelfCrossings/" + std::filesystem::path(path).filename().string()).c_str(),
+        [path](benchmark::State& state) {
+          std::optional<hlr::Solid> mesh, copy;
+          try {
+            mesh.emplace(hlr::stdlib::import_mesh(path).solid);
+          } catch (const hlr::stdlib::MeshImportError& e) {
+            state.SkipWithError(e.what());
+            return;
+          }
+          std::size_t found = 0;
+          for (auto _ : state) {
+            state.PauseTiming();
+            copy.reset();
+            copy.emplace(*mesh);
+            state.ResumeTiming();
+            found = copy->self_crossings().size();
+            benchmark::DoNotOptimize(found);
+          }
+          state.counters["faces"] = static_cast<double>(mesh->faces.size());
+          state.counters["crossings"] = static_cast<double>(found);
+        })
+        ->Unit(benchmark::kMillisecond)
+        ->UseRealTime();
+    // The first frame's hidden lines (self-crossing search included) from above and to the side of the
+    // mesh at three times its size, as bench/scenes' mesh scripts look at it.
+    benchmark::RegisterBenchmark(
+        ("FileHiddenLines/" + std::filesystem::path(path).filename().string()).c_str(),
+        [path](benchmark::State& state) {
+          std::optional<hlr::Solid> mesh;
+          try {
+            mesh.emplace(hlr::stdlib::import_mesh(path).solid);
+          } catch (const hlr::stdlib::MeshImportError& e) {
+            state.SkipWithError(e.what());
+            return;
+          }
+          hlr::Box3 box;
+          for (const hlr::Point3& p : mesh->vertices) box.include(p);
+          const hlr::Point3 centre = hlr::lerp(box.lo, box.hi, 0.5);
+          hlr::LookatParameters view;
+          view.eye = centre + 0.5 * box.largest_side() * hlr::Vector3{1.6, -2.4, 1.2};
+          view.target = centre;
+          view.fov_deg = 30;
+          const hlr::Camera camera = hlr::lookat_camera(view);
+          hlr::Scene scene;
+          std::size_t pieces = 0;
+          for (auto _ : state) {
+            state.PauseTiming();
+            scene.objects.clear();
+            scene.objects.push_back({"mesh", *mesh});
+            state.ResumeTiming();
+            pieces = hlr::render_frame(scene, camera).segments.size();
+            benchmark::DoNotOptimize(pieces);
+          }
+          state.counters["faces"] = static_cast<double>(mesh->faces.size());
+          state.counters["pieces"] = static_cast<double>(pieces);
+        })
+        ->Unit(benchmark::kMillisecond)
+        ->UseRealTime();
   }
   return true;
 }();

@@ -17,13 +17,23 @@
 namespace hlr {
 namespace {
 
-// Sorts entries by their cell (the upper 30 bits), keeping the face order within a cell, which they were
-// made in: two stable counting passes of 15 bits — linear, where a comparison sort was the finder's
-// largest cost.
+// A grid entry (one face in one cell) packed in 64 bits: the cell's 30 bits (x | y << 10 | z << 20) on top,
+// then three bits telling on which axes the cell is the first the face's box reaches, then the face's 31.
+// Of two faces in a cell, their pair belongs to the cell where both boxes have begun on every axis — the
+// cell whose coordinate on each axis is one of the two faces' first — and the flags tell that without
+// looking either face up (half the pairs met in a cell belong to another).
+constexpr int kCellShift = 34, kFirstShift = 31;
+constexpr std::uint64_t kFaceMask = 0x7fffffffu;
+std::uint64_t cell_of(std::uint64_t entry) { return entry >> kCellShift; }
+FaceIndex face_of(std::uint64_t entry) { return static_cast<FaceIndex>(entry & kFaceMask); }
+bool pair_is_met_here(std::uint64_t a, std::uint64_t b) { return (((a | b) >> kFirstShift) & 7) == 7; }
+
+// Sorts entries by their cell, keeping the face order within a cell, which they were made in: two stable
+// counting passes of 15 bits — linear, where a comparison sort was the finder's largest cost.
 void sort_by_cell(std::vector<std::uint64_t>& entries) {
   std::vector<std::uint64_t> buffer(entries.size());
   std::vector<std::uint32_t> counts(1u << 15);
-  for (const int shift : {32, 47}) {
+  for (const int shift : {kCellShift, kCellShift + 15}) {
     std::fill(counts.begin(), counts.end(), 0u);
     for (std::uint64_t e : entries) ++counts[(e >> shift) & 0x7fff];
     std::uint32_t sum = 0;
@@ -75,7 +85,7 @@ class Finder {
 
   // What one thread finds, with its own buffers.
   struct Part {
-    std::vector<FaceIndex> cell;  // a crowded cell's faces, for the sweep
+    std::vector<std::uint64_t> cell;  // a crowded cell's entries, for the sweep
     FaceCrossingScratch scratch;
     std::vector<CrossingPiece> pieces;
     std::vector<SelfCrossing> found;
@@ -142,15 +152,18 @@ class Finder {
       }
       for (std::uint64_t x = fi.lo[0]; x <= fi.hi[0]; ++x)
         for (std::uint64_t y = fi.lo[1]; y <= fi.hi[1]; ++y)
-          for (std::uint64_t z = fi.lo[2]; z <= fi.hi[2]; ++z)
-            entries.push_back(((x | (y << 10) | (z << 20)) << 32) | f);
+          for (std::uint64_t z = fi.lo[2]; z <= fi.hi[2]; ++z) {
+            const std::uint64_t first =
+                (x == fi.lo[0] ? 1u : 0u) | (y == fi.lo[1] ? 2u : 0u) | (z == fi.lo[2] ? 4u : 0u);
+            entries.push_back(((x | (y << 10) | (z << 20)) << kCellShift) | first << kFirstShift | f);
+          }
     }
     sort_by_cell(entries);
     // Chunks of whole cells, about kChunk entries each.
     constexpr std::size_t kChunk = 4096;
     std::vector<std::size_t> bounds{0};
     for (std::size_t i = kChunk; i < entries.size(); i += kChunk) {
-      while (i < entries.size() && (entries[i] >> 32) == (entries[i - 1] >> 32)) ++i;
+      while (i < entries.size() && cell_of(entries[i]) == cell_of(entries[i - 1])) ++i;
       if (i < entries.size() && i > bounds.back()) bounds.push_back(i);
     }
     bounds.push_back(entries.size());
@@ -158,26 +171,18 @@ class Finder {
     parallel_chunks(parts.size(), threads_for(entries.size(), 50000, 0), [&](std::size_t k) {
       Part& part = parts[k];
       for (std::size_t i = bounds[k]; i < bounds[k + 1];) {
-        const std::uint64_t key = entries[i] >> 32;
+        const std::uint64_t cell = cell_of(entries[i]);
         std::size_t end = i + 1;
-        while (end < bounds[k + 1] && (entries[end] >> 32) == key) ++end;
-        const auto cx = static_cast<std::uint16_t>(key & 1023),
-                   cy = static_cast<std::uint16_t>((key >> 10) & 1023),
-                   cz = static_cast<std::uint16_t>(key >> 20);
-        // A pair sharing several cells is examined in the first of them only.
-        auto visit = [&](FaceIndex fa, FaceIndex fb) {
-          const FaceInfo &a = info_[fa], &b = info_[fb];
-          if (std::max(a.lo[0], b.lo[0]) == cx && std::max(a.lo[1], b.lo[1]) == cy &&
-              std::max(a.lo[2], b.lo[2]) == cz)
-            pair(fa, fb, part);
+        while (end < bounds[k + 1] && cell_of(entries[end]) == cell) ++end;
+        // A pair sharing several cells is examined in one of them only.
+        auto visit = [&](std::uint64_t a, std::uint64_t b) {
+          if (pair_is_met_here(a, b)) pair(face_of(a), face_of(b), part);
         };
         if (end - i > kSweepAbove) {
           sweep_cell(entries, i, end, part.cell, visit);
         } else {
           for (std::size_t p = i; p < end; ++p)
-            for (std::size_t q = p + 1; q < end; ++q)
-              visit(static_cast<FaceIndex>(entries[p] & 0xffffffffu),
-                    static_cast<FaceIndex>(entries[q] & 0xffffffffu));
+            for (std::size_t q = p + 1; q < end; ++q) visit(entries[p], entries[q]);
         }
         i = end;
       }
@@ -199,21 +204,21 @@ class Finder {
   // median (the sides of a many-sided prism, as tall as the cells are wide) crowd into a few cells.
   static constexpr std::size_t kSweepAbove = 32;
 
-  // Calls visit(a, b) (a before b in the cell) for the pairs of the cell's faces whose boxes overlap
+  // Calls visit(a, b) (two of the cell's entries) for the pairs of the cell's faces whose boxes overlap
   // along the axis where they overlap least: sorted by the box's low end on it, each face meets the
   // faces starting before its box ends.
   template <typename Visit>
   void sweep_cell(const std::vector<std::uint64_t>& entries, std::size_t begin, std::size_t end,
-                  std::vector<FaceIndex>& faces, Visit&& visit) const {
-    faces.clear();
-    for (std::size_t p = begin; p < end; ++p)
-      faces.push_back(static_cast<FaceIndex>(entries[p] & 0xffffffffu));
+                  std::vector<std::uint64_t>& cell, Visit&& visit) const {
+    cell.assign(entries.begin() + static_cast<std::ptrdiff_t>(begin),
+                entries.begin() + static_cast<std::ptrdiff_t>(end));
     int axis = 0;
     double best = -1;
     for (int k = 0; k < 3; ++k) {  // overlaps expected ∝ total box length / the range they spread over
-      double length = 0, lo = info_[faces[0]].box.lo[k], hi = info_[faces[0]].box.hi[k];
-      for (FaceIndex f : faces) {
-        const Box3& b = info_[f].box;
+      const Box3& first = info_[face_of(cell[0])].box;
+      double length = 0, lo = first.lo[k], hi = first.hi[k];
+      for (std::uint64_t e : cell) {
+        const Box3& b = info_[face_of(e)].box;
         length += b.hi[k] - b.lo[k];
         lo = std::min(lo, b.lo[k]);
         hi = std::max(hi, b.hi[k]);
@@ -221,14 +226,14 @@ class Finder {
       const double score = (hi - lo) / std::max(length, Tolerance::kFloor);
       if (score > best) best = score, axis = k;
     }
-    std::sort(faces.begin(), faces.end(), [&](FaceIndex a, FaceIndex b) {
-      const double la = info_[a].box.lo[axis], lb = info_[b].box.lo[axis];
-      return la < lb || (la == lb && a < b);
+    std::sort(cell.begin(), cell.end(), [&](std::uint64_t a, std::uint64_t b) {
+      const double la = info_[face_of(a)].box.lo[axis], lb = info_[face_of(b)].box.lo[axis];
+      return la < lb || (la == lb && face_of(a) < face_of(b));
     });
-    for (std::size_t p = 0; p < faces.size(); ++p) {
-      const double reach = info_[faces[p]].box.hi[axis] + 2 * tol_;
-      for (std::size_t q = p + 1; q < faces.size() && info_[faces[q]].box.lo[axis] <= reach; ++q)
-        visit(std::min(faces[p], faces[q]), std::max(faces[p], faces[q]));
+    for (std::size_t p = 0; p < cell.size(); ++p) {
+      const double reach = info_[face_of(cell[p])].box.hi[axis] + 2 * tol_;
+      for (std::size_t q = p + 1; q < cell.size() && info_[face_of(cell[q])].box.lo[axis] <= reach; ++q)
+        visit(cell[p], cell[q]);
     }
   }
 
