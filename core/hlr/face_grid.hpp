@@ -24,6 +24,12 @@ class FaceGrid {
                      Visit&& visit) const;
 
   bool empty() const { return nx_ == 0; }
+  // The cells, numbered row by row: how many, and the one holding p (clamped to the grid).
+  std::size_t cell_count() const { return static_cast<std::size_t>(nx_) * static_cast<std::size_t>(ny_); }
+  std::size_t cell_of(Point2 p) const {
+    return static_cast<std::size_t>(row(p.y)) * static_cast<std::size_t>(nx_) +
+           static_cast<std::size_t>(column(p.x));
+  }
 
  private:
   int column(double x) const;

@@ -133,12 +133,32 @@ FrameResult render_frame(const Scene& scene, const Camera& camera, const HlrOpti
 
   auto grid = std::make_unique<const FaceGrid>(setup, domain, options.threads);
 
-  // Candidates are split into chunks; each chunk's output is kept apart and joined in order, so the
-  // result does not depend on the number of threads.
-  constexpr std::uint32_t kChunk = 256;
+  // Candidates are examined in the order of the grid cell their midpoint lies in (a counting sort): one
+  // after another they then meet the same occluders while those are still in cache, where a scan's edges
+  // come in no spatial order and each test waited on memory. They are split into chunks of that order;
+  // each chunk keeps its pieces and how many each candidate gave, and the pieces are put back in candidate
+  // order, so the result depends neither on the order nor on the number of threads.
   const auto n = static_cast<std::uint32_t>(setup.candidates.size());
+  std::vector<std::uint32_t> order(n);
+  if (grid->empty()) {
+    for (std::uint32_t i = 0; i < n; ++i) order[i] = i;
+  } else {
+    std::vector<std::uint32_t> start(grid->cell_count() + 1, 0), cell(n);
+    for (std::uint32_t i = 0; i < n; ++i) {
+      const Candidate& c = setup.candidates[i];
+      cell[i] = static_cast<std::uint32_t>(grid->cell_of(lerp(c.pic0, c.pic1, 0.5)));
+      ++start[cell[i] + 1];
+    }
+    for (std::size_t k = 1; k < start.size(); ++k) start[k] += start[k - 1];
+    for (std::uint32_t i = 0; i < n; ++i) order[start[cell[i]]++] = i;
+  }
+  constexpr std::uint32_t kChunk = 256;
   const std::uint32_t chunks = (n + kChunk - 1) / kChunk;
-  std::vector<std::vector<VisibleSegment>> outputs(chunks);
+  struct ChunkOutput {
+    std::vector<VisibleSegment> pieces;
+    std::vector<std::uint32_t> counts;  // per candidate of the chunk, in the order examined
+  };
+  std::vector<ChunkOutput> outputs(chunks);
   const Affine3 world_from_view = camera.viewFromWorld.inverse();
   // One worker (scratch buffers, stamps) per thread that takes part; chunks go to whichever is free.
   tbb::enumerable_thread_specific<Worker> workers([&] {
@@ -156,20 +176,33 @@ FrameResult render_frame(const Scene& scene, const Camera& camera, const HlrOpti
     buffer.clear();
     const auto first = static_cast<std::uint32_t>(k) * kChunk;
     const std::uint32_t end = std::min(n, first + kChunk);
-    for (std::uint32_t i = first; i < end; ++i) w.process(i, buffer);
-    outputs[k].assign(buffer.begin(), buffer.end());
+    outputs[k].counts.reserve(end - first);
+    for (std::uint32_t i = first; i < end; ++i) {
+      const std::size_t before = buffer.size();
+      w.process(order[i], buffer);
+      outputs[k].counts.push_back(static_cast<std::uint32_t>(buffer.size() - before));
+    }
+    outputs[k].pieces.assign(buffer.begin(), buffer.end());
   });
   std::size_t face_tests = 0;
   for (const Worker& w : workers) face_tests += w.face_tests;
   // The inputs are no longer needed; free them before the join, which briefly holds the output twice.
   grid.reset();
   setup = FrameSetup{};
-  std::size_t total = 0;
-  for (const auto& part : outputs) total += part.size();
-  result.segments.reserve(total);
-  for (auto& part : outputs) {
-    result.segments.insert(result.segments.end(), part.begin(), part.end());
-    std::vector<VisibleSegment>().swap(part);
+  std::vector<std::uint32_t> offset(n + 1, 0);  // of each candidate's pieces in the result
+  for (std::uint32_t k = 0; k < chunks; ++k)
+    for (std::uint32_t j = 0; j < outputs[k].counts.size(); ++j)
+      offset[order[k * kChunk + j] + 1] = outputs[k].counts[j];
+  for (std::uint32_t i = 0; i < n; ++i) offset[i + 1] += offset[i];
+  result.segments.resize(offset[n]);
+  for (std::uint32_t k = 0; k < chunks; ++k) {
+    const VisibleSegment* from = outputs[k].pieces.data();
+    for (std::uint32_t j = 0; j < outputs[k].counts.size(); ++j) {
+      const std::uint32_t count = outputs[k].counts[j];
+      std::copy(from, from + count, result.segments.begin() + offset[order[k * kChunk + j]]);
+      from += count;
+    }
+    outputs[k] = ChunkOutput{};
   }
   if (options.coincident_once) remove_covered_pieces(result.segments, options.threads);
   result.stats.face_tests = face_tests;
