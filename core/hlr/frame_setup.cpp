@@ -276,8 +276,7 @@ void append(FrameSetup& setup, FrameSetup&& part) {
 
 }  // namespace
 
-FrameSetup prepare_frame(const Scene& scene, const Camera& camera, bool intersection_lines, bool keep_culled,
-                         unsigned threads) {
+FrameSetup prepare_frame(const Scene& scene, const Camera& camera, bool keep_culled, unsigned threads) {
   FrameSetup setup;
   setup.length_tolerance = frame_tolerance(scene, camera).length;
   const double ltol = setup.length_tolerance;
@@ -390,17 +389,6 @@ FrameSetup prepare_frame(const Scene& scene, const Camera& camera, bool intersec
     part = FrameSetup{};  // release as we go: peak memory stays near one copy
   }
 
-  if (intersection_lines) {
-    // Collected apart and appended at their exact count, so the large candidate list grows once.
-    FrameSetup crossings;
-    add_intersection_candidates(scene, camera, facing, cull, ltol, keep_culled, crossings);
-    clip_and_project(crossings, 0, camera, ltol);
-    if (!crossings.candidates.empty()) {
-      setup.candidates.reserve(setup.candidates.size() + crossings.candidates.size());
-      append(setup, std::move(crossings));
-    }
-  }
-
   // Grids over the rings of large occluders, made once the points are where they stay.
   std::vector<std::uint32_t> ends;
   for (Occluder& o : setup.occluders) {
@@ -413,7 +401,21 @@ FrameSetup prepare_frame(const Scene& scene, const Camera& camera, bool intersec
     setup.ring_grids.emplace_back(std::span<const Point2>(setup.polygon_points.data() + o.first_point, count),
                                   ends);
   }
+  setup.facing = std::move(facing);
+  setup.cull = std::move(cull);
   return setup;
+}
+
+void append_intersection_candidates(FrameSetup& setup, const Scene& scene, const Camera& camera,
+                                    bool keep_culled) {
+  // Collected apart and appended at their exact count, so the large candidate list grows once.
+  FrameSetup crossings;
+  add_intersection_candidates(scene, camera, setup.facing, setup.cull, setup.length_tolerance, keep_culled,
+                              crossings);
+  clip_and_project(crossings, 0, camera, setup.length_tolerance);
+  if (crossings.candidates.empty()) return;
+  setup.candidates.reserve(setup.candidates.size() + crossings.candidates.size());
+  append(setup, std::move(crossings));
 }
 
 }  // namespace hlr

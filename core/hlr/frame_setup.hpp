@@ -63,14 +63,24 @@ struct FrameSetup {
   std::vector<Candidate> candidates;
   double length_tolerance = 0;           // view-space
   Rect2 picture_bounds = Rect2::none();  // of all candidates
+  // Per object, kept for the intersection candidates: each face's facing (see face_facing) and whether
+  // the object is culled whole (a closed solid wholly in front of the eye shows only its front faces).
+  std::vector<std::vector<std::int8_t>> facing;
+  std::vector<char> cull;
 };
 
 // Sets c.picture_tolerance from its current picture and view end points.
 void set_picture_tolerance(Candidate& c, const Camera& camera, double length_tolerance);
 
 // Culled candidates (hidden by the back-face rules alone) are kept only when `keep_culled` is set.
-// Objects are prepared in parallel as core/parallel.hpp's `threads` says (0: the caller's arena).
-FrameSetup prepare_frame(const Scene& scene, const Camera& camera, bool intersection_lines, bool keep_culled,
-                         unsigned threads = 0);
+// Objects are prepared in parallel as core/parallel.hpp's `threads` says (0: the caller's arena). The
+// candidates are the solids' edges; append_intersection_candidates() adds the lines where faces cross.
+FrameSetup prepare_frame(const Scene& scene, const Camera& camera, bool keep_culled, unsigned threads = 0);
+
+// Appends to the candidates of prepare_frame(scene, camera, keep_culled, …) the pieces of the lines where
+// faces cross (of two solids, or of one: Solid::self_crossings, searched for now if not yet known),
+// clipped to the near plane and projected.
+void append_intersection_candidates(FrameSetup& setup, const Scene& scene, const Camera& camera,
+                                    bool keep_culled);
 
 }  // namespace hlr

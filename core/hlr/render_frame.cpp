@@ -1,6 +1,7 @@
 #include "core/hlr/render_frame.hpp"
 
 #include <tbb/enumerable_thread_specific.h>
+#include <tbb/task_group.h>
 
 #include <algorithm>
 #include <memory>
@@ -41,7 +42,7 @@ bool is_own_face(const Candidate& c, const Occluder& o) {
 struct Worker {
   const FrameSetup& setup;
   const Camera& camera;
-  const FaceGrid& grid;
+  const FaceGrid* grid;
   const HlrOptions& options;
   Affine3 world_from_view;
   std::vector<std::uint32_t> stamp;
@@ -81,7 +82,7 @@ struct Worker {
     Rect2 box = Rect2::none();
     box.include(c.pic0);
     box.include(c.pic1);
-    grid.for_each_near(c.pic0, c.pic1, stamp, index + 1, [&](std::uint32_t id) {
+    grid->for_each_near(c.pic0, c.pic1, stamp, index + 1, [&](std::uint32_t id) {
       const Occluder& o = setup.occluders[id];
       if (o.min_depth >= max_depth || !o.bounds.overlaps(box) || is_own_face(c, o)) return;
       ++face_tests;
@@ -101,21 +102,24 @@ struct Worker {
   }
 };
 
-}  // namespace
-
-FrameResult render_frame(const Scene& scene, const Camera& camera, const HlrOptions& options) {
-  const auto check_cancel = [&] {
-    if (options.cancel && options.cancel->load(std::memory_order_relaxed)) throw RenderCancelled();
+// A run of candidates examined: the order they were taken in, and per chunk of that order the pieces and
+// how many each candidate gave.
+struct Examined {
+  struct Chunk {
+    std::vector<VisibleSegment> pieces;
+    std::vector<std::uint32_t> counts;  // per candidate of the chunk, in the order examined
   };
-  check_cancel();
-  FrameSetup setup =
-      prepare_frame(scene, camera, options.intersection_lines, options.include_hidden, options.threads);
-  check_cancel();
+  static constexpr std::uint32_t kChunk = 256;
+  std::vector<std::uint32_t> order;
+  std::vector<Chunk> chunks;
+};
 
-  // Only what lies inside the picture frame is examined.
-  std::size_t kept = 0;
-  Rect2 domain = Rect2::none();
-  for (Candidate& c : setup.candidates) {
+// Restricts candidates [from, end) to the picture frame, sets their tolerances and widens `domain` to
+// them; drops what lies outside the frame. Returns the new end.
+std::size_t clip_candidates(FrameSetup& setup, std::size_t from, const Camera& camera, Rect2& domain) {
+  std::size_t kept = from;
+  for (std::size_t i = from; i < setup.candidates.size(); ++i) {
+    Candidate c = setup.candidates[i];
     if (!clip_to_frame(c, camera)) continue;
     set_picture_tolerance(c, camera, setup.length_tolerance);
     domain.include(c.pic0);
@@ -123,87 +127,150 @@ FrameResult render_frame(const Scene& scene, const Camera& camera, const HlrOpti
     setup.candidates[kept++] = c;
   }
   setup.candidates.resize(kept);
+  return kept;
+}
 
-  FrameResult result;
-  result.stats.candidate_edges = setup.candidates.size();
-  result.stats.occluder_faces = setup.occluders.size();
-  for (const Candidate& c : setup.candidates)
-    if (c.source == SegmentSource::Intersection) ++result.stats.intersection_lines;
-  if (setup.candidates.empty()) return result;
+}  // namespace
 
+FrameResult render_frame(const Scene& scene, const Camera& camera, const HlrOptions& options) {
+  const auto check_cancel = [&] {
+    if (options.cancel && options.cancel->load(std::memory_order_relaxed)) throw RenderCancelled();
+  };
+  check_cancel();
+  // Where a solid passes through itself is searched for once per solid (and kept with it). The edges'
+  // visibility does not need it, so the search runs beside their preparation and examination and takes
+  // up what of that work runs on one core; the lines it finds are examined last. Only in the caller's
+  // arena (threads 0): one thread means this thread only.
+  tbb::task_group crossing_search;
+  struct WaitOnExit {
+    tbb::task_group& group;
+    bool armed;
+    void wait() {
+      if (armed) group.wait();
+      armed = false;
+    }
+    ~WaitOnExit() {
+      if (armed) group.wait();
+    }
+  } search{crossing_search, options.intersection_lines && options.threads == 0};
+  if (search.armed)
+    crossing_search.run([&scene] {
+      for (const SceneObject& o : scene.objects) o.solid->self_crossings();
+    });
+
+  FrameSetup setup = prepare_frame(scene, camera, options.include_hidden, options.threads);
+  check_cancel();
+  // Only what lies inside the picture frame is examined.
+  Rect2 domain = Rect2::none();
+  const std::size_t edges = clip_candidates(setup, 0, camera, domain);
   auto grid = std::make_unique<const FaceGrid>(setup, domain, options.threads);
 
-  // Candidates are examined in the order of the grid cell their midpoint lies in (a counting sort): one
-  // after another they then meet the same occluders while those are still in cache, where a scan's edges
-  // come in no spatial order and each test waited on memory. They are split into chunks of that order;
-  // each chunk keeps its pieces and how many each candidate gave, and the pieces are put back in candidate
-  // order, so the result depends neither on the order nor on the number of threads.
-  const auto n = static_cast<std::uint32_t>(setup.candidates.size());
-  std::vector<std::uint32_t> order(n);
-  if (grid->empty()) {
-    for (std::uint32_t i = 0; i < n; ++i) order[i] = i;
-  } else {
-    std::vector<std::uint32_t> start(grid->cell_count() + 1, 0), cell(n);
-    for (std::uint32_t i = 0; i < n; ++i) {
-      const Candidate& c = setup.candidates[i];
-      cell[i] = static_cast<std::uint32_t>(grid->cell_of(lerp(c.pic0, c.pic1, 0.5)));
-      ++start[cell[i] + 1];
-    }
-    for (std::size_t k = 1; k < start.size(); ++k) start[k] += start[k - 1];
-    for (std::uint32_t i = 0; i < n; ++i) order[start[cell[i]]++] = i;
-  }
-  constexpr std::uint32_t kChunk = 256;
-  const std::uint32_t chunks = (n + kChunk - 1) / kChunk;
-  struct ChunkOutput {
-    std::vector<VisibleSegment> pieces;
-    std::vector<std::uint32_t> counts;  // per candidate of the chunk, in the order examined
-  };
-  std::vector<ChunkOutput> outputs(chunks);
   const Affine3 world_from_view = camera.viewFromWorld.inverse();
   // One worker (scratch buffers, stamps) per thread that takes part; chunks go to whichever is free.
   tbb::enumerable_thread_specific<Worker> workers([&] {
-    return Worker{
-        setup, camera, *grid, options, world_from_view, std::vector<std::uint32_t>(setup.occluders.size(), 0),
-        {},    {},     0,     {}};
+    return Worker{setup,
+                  camera,
+                  grid.get(),
+                  options,
+                  world_from_view,
+                  std::vector<std::uint32_t>(setup.occluders.size(), 0),
+                  {},
+                  {},
+                  0,
+                  {}};
   });
-  // About 0.5 µs per candidate on one core: a thousand of them is half a millisecond.
-  parallel_chunks(chunks, threads_for(n, 2048, options.threads), [&](std::size_t k) {
-    check_cancel();
-    Worker& w = workers.local();
-    // Each chunk's pieces are gathered in the worker's buffer and stored at their exact size: growing
-    // every chunk's vector by doubling would hold up to twice the output in slack at the frame's peak.
-    std::vector<VisibleSegment>& buffer = w.buffer;
-    buffer.clear();
-    const auto first = static_cast<std::uint32_t>(k) * kChunk;
-    const std::uint32_t end = std::min(n, first + kChunk);
-    outputs[k].counts.reserve(end - first);
-    for (std::uint32_t i = first; i < end; ++i) {
-      const std::size_t before = buffer.size();
-      w.process(order[i], buffer);
-      outputs[k].counts.push_back(static_cast<std::uint32_t>(buffer.size() - before));
+  // Candidates [begin, end) are examined in the order of the grid cell their midpoint lies in (a counting
+  // sort): one after another they then meet the same occluders while those are still in cache, where a
+  // scan's edges come in no spatial order and each test waited on memory. They are split into chunks of
+  // that order; each chunk keeps its pieces and how many each candidate gave, and the pieces are put back
+  // in candidate order at the end, so the result depends neither on the order nor on the number of threads.
+  auto examine = [&](std::uint32_t begin, std::uint32_t end) {
+    Examined run;
+    const std::uint32_t n = end - begin;
+    run.order.resize(n);
+    if (grid->empty()) {
+      for (std::uint32_t i = 0; i < n; ++i) run.order[i] = begin + i;
+    } else {
+      std::vector<std::uint32_t> start(grid->cell_count() + 1, 0), cell(n);
+      for (std::uint32_t i = 0; i < n; ++i) {
+        const Candidate& c = setup.candidates[begin + i];
+        cell[i] = static_cast<std::uint32_t>(grid->cell_of(lerp(c.pic0, c.pic1, 0.5)));
+        ++start[cell[i] + 1];
+      }
+      for (std::size_t k = 1; k < start.size(); ++k) start[k] += start[k - 1];
+      for (std::uint32_t i = 0; i < n; ++i) run.order[start[cell[i]]++] = begin + i;
     }
-    outputs[k].pieces.assign(buffer.begin(), buffer.end());
-  });
+    run.chunks.resize((n + Examined::kChunk - 1) / Examined::kChunk);
+    // About 0.5 µs per candidate on one core: a thousand of them is half a millisecond.
+    parallel_chunks(run.chunks.size(), threads_for(n, 2048, options.threads), [&](std::size_t k) {
+      check_cancel();
+      Worker& w = workers.local();
+      // Each chunk's pieces are gathered in the worker's buffer and stored at their exact size: growing
+      // every chunk's vector by doubling would hold up to twice the output in slack at the frame's peak.
+      std::vector<VisibleSegment>& buffer = w.buffer;
+      buffer.clear();
+      Examined::Chunk& chunk = run.chunks[k];
+      const auto first = static_cast<std::uint32_t>(k) * Examined::kChunk;
+      const std::uint32_t last = std::min(n, first + Examined::kChunk);
+      chunk.counts.reserve(last - first);
+      for (std::uint32_t i = first; i < last; ++i) {
+        const std::size_t before = buffer.size();
+        w.process(run.order[i], buffer);
+        chunk.counts.push_back(static_cast<std::uint32_t>(buffer.size() - before));
+      }
+      chunk.pieces.assign(buffer.begin(), buffer.end());
+    });
+    return run;
+  };
+  std::vector<Examined> runs;
+  runs.push_back(examine(0, static_cast<std::uint32_t>(edges)));
+  check_cancel();
+
+  if (options.intersection_lines) {
+    search.wait();
+    append_intersection_candidates(setup, scene, camera, options.include_hidden);
+    Rect2 wider = domain;
+    const std::size_t end = clip_candidates(setup, edges, camera, wider);
+    if (end > edges) {
+      // The grid holds only the occluders that meet its domain: lines beyond it need a wider grid.
+      const bool beyond = domain.empty() || wider.xmin < domain.xmin || wider.ymin < domain.ymin ||
+                          wider.xmax > domain.xmax || wider.ymax > domain.ymax;
+      if (beyond) {
+        grid = std::make_unique<const FaceGrid>(setup, wider, options.threads);
+        for (Worker& w : workers) w.grid = grid.get();
+      }
+      runs.push_back(examine(static_cast<std::uint32_t>(edges), static_cast<std::uint32_t>(end)));
+    }
+  }
+
+  FrameResult result;
+  const auto n = static_cast<std::uint32_t>(setup.candidates.size());
+  result.stats.candidate_edges = n;
+  result.stats.occluder_faces = setup.occluders.size();
+  result.stats.intersection_lines = n - edges;
   std::size_t face_tests = 0;
   for (const Worker& w : workers) face_tests += w.face_tests;
   // The inputs are no longer needed; free them before the join, which briefly holds the output twice.
   grid.reset();
   setup = FrameSetup{};
   std::vector<std::uint32_t> offset(n + 1, 0);  // of each candidate's pieces in the result
-  for (std::uint32_t k = 0; k < chunks; ++k)
-    for (std::uint32_t j = 0; j < outputs[k].counts.size(); ++j)
-      offset[order[k * kChunk + j] + 1] = outputs[k].counts[j];
+  for (const Examined& run : runs)
+    for (std::size_t k = 0; k < run.chunks.size(); ++k)
+      for (std::size_t j = 0; j < run.chunks[k].counts.size(); ++j)
+        offset[run.order[k * Examined::kChunk + j] + 1] = run.chunks[k].counts[j];
   for (std::uint32_t i = 0; i < n; ++i) offset[i + 1] += offset[i];
   result.segments.resize(offset[n]);
-  for (std::uint32_t k = 0; k < chunks; ++k) {
-    const VisibleSegment* from = outputs[k].pieces.data();
-    for (std::uint32_t j = 0; j < outputs[k].counts.size(); ++j) {
-      const std::uint32_t count = outputs[k].counts[j];
-      std::copy(from, from + count, result.segments.begin() + offset[order[k * kChunk + j]]);
-      from += count;
+  for (Examined& run : runs)
+    for (std::size_t k = 0; k < run.chunks.size(); ++k) {
+      Examined::Chunk& chunk = run.chunks[k];
+      const VisibleSegment* from = chunk.pieces.data();
+      for (std::size_t j = 0; j < chunk.counts.size(); ++j) {
+        std::copy(from, from + chunk.counts[j],
+                  result.segments.begin() + offset[run.order[k * Examined::kChunk + j]]);
+        from += chunk.counts[j];
+      }
+      chunk = Examined::Chunk{};
     }
-    outputs[k] = ChunkOutput{};
-  }
   if (options.coincident_once) remove_covered_pieces(result.segments, options.threads);
   result.stats.face_tests = face_tests;
   result.stats.visible_segments = static_cast<std::size_t>(std::count_if(

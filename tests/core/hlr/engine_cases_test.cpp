@@ -701,6 +701,25 @@ TEST(EngineCasesFrame, LookatFrameClipsExactly) {
   EXPECT_EQ(on_frame, 2 + 2 + 6);
 }
 
+// The same camera before a large box A = [−20, 20] × [0, 40] × [−20, 20] (its front face y = 0, depth 5,
+// fills the frame; its edges lie outside it) and a slab B = [−1000, 1000] × [−4.8, 10] × [−20, −0.5]
+// running into it under the eye. B's front top edge (depth 0.2, picture z = −2.5) is outside the frame; its
+// far top edge (y = 10, depth 15, picture z = −1/30) lies inside A, hidden. Where B's top meets A's front
+// face, the line y = 0, z = −0.5 (picture z = −0.1, across the frame for |x| ≤ 1.5·5/f) is visible: it lies
+// beyond the only edge piece in the frame, and the engine looks for its occluders after the edges' (on a
+// grid widened to it).
+TEST(EngineCasesFrame, AnIntersectionLineBeyondEveryEdgeInTheFrame) {
+  const Scene scene =
+      scene_of({stdlib::box({-20, 0, -20}, {20, 40, 20}), stdlib::box({-1000, -4.8, -20}, {1000, 10, -0.5})});
+  const Camera cam = lookat({0, -5, 0}, {0, 0, 0}, {0, 0, 1}, 90, 1.5);
+  ASSERT_TRUE(cam.frame.has_value());
+  const FrameResult r = render_frame(scene, cam);
+  expect_sane(r, cam, "line beyond the edges");
+  const double x5 = 1.5 * 5 / cam.focal;
+  expect_segments(r, {{0, {-x5, 0, -0.5}, {x5, 0, -0.5}, SegmentSource::Intersection}}, 1e-9,
+                  "line beyond the edges");
+}
+
 // A cancel flag that is set stops the frame (the REPL's Ctrl-C); one that is clear changes nothing.
 TEST(EngineCases, ACancelFlagStopsTheFrame) {
   const Scene scene = scene_of({stdlib::box({-2, 2, -2}, {2, 3, 2}), stdlib::box({1, 0, -0.5}, {3, 1, 0.5})});
