@@ -201,6 +201,7 @@ FrameResult render_frame(const Scene& scene, const Camera& camera, const HlrOpti
       for (std::uint32_t i = 0; i < n; ++i) run.order[start[cell[i]]++] = begin + i;
     }
     run.chunks.resize((n + Examined::kChunk - 1) / Examined::kChunk);
+    constexpr std::uint32_t kAhead = 4;
     // About 0.5 µs per candidate on one core: a thousand of them is half a millisecond.
     parallel_chunks(run.chunks.size(), threads_for(n, 2048, options.threads), [&](std::size_t k) {
       check_cancel();
@@ -215,6 +216,12 @@ FrameResult render_frame(const Scene& scene, const Camera& camera, const HlrOpti
       chunk.counts.reserve(last - first);
       for (std::uint32_t i = first; i < last; ++i) {
         const std::size_t before = buffer.size();
+        // The candidates come from all over their list: fetch a few ahead, as their order is known.
+        if (i + kAhead < last) {
+          const Candidate* ahead = &setup.candidates[run.order[i + kAhead]];
+          __builtin_prefetch(ahead);
+          __builtin_prefetch(reinterpret_cast<const char*>(ahead) + 64);
+        }
         w.process(run.order[i], buffer);
         chunk.counts.push_back(static_cast<std::uint32_t>(buffer.size() - before));
       }
