@@ -43,14 +43,15 @@ void sort_by_cell(std::vector<std::uint64_t>& entries) {
   }
 }
 
-// Per face, what the pair tests read: its box, its cell range, and (for faces of up to four vertices,
-// the common case) its vertices inline, so that telling neighbours apart touches no other memory.
-struct FaceInfo {
+// Per face, what the pair tests read, in one cache line: its box and, for a face of one ring of up to four
+// vertices (the common case), its vertices, the first repeated to fill four (repeats match nothing new),
+// so that telling neighbours apart touches no other memory. A larger face has v[0] = kLarge and v[1] the
+// index of its sorted vertices in Finder::big_.
+constexpr VertexIndex kLarge = ~VertexIndex{0};
+struct alignas(64) FaceInfo {
   Box3 box;
-  std::uint16_t lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0};
-  std::uint8_t count = 0;  // vertices inline; 0: more than four, sorted in Finder::big_[big]
   VertexIndex v[4] = {0, 0, 0, 0};
-  std::uint32_t big = 0;
+  bool small() const { return v[0] != kLarge; }
 };
 
 class Finder {
@@ -71,11 +72,12 @@ class Finder {
         }
       const auto& outer = face.rings[0].vertices;
       if (face.rings.size() == 1 && outer.size() <= 4) {
-        info.count = static_cast<std::uint8_t>(outer.size());
         std::copy(outer.begin(), outer.end(), info.v);
+        std::fill(info.v + outer.size(), info.v + 4, outer[0]);
       } else {  // sorted once: a large face meets many neighbours
         big_.emplace_back();
-        info.big = static_cast<std::uint32_t>(big_.size() - 1);
+        info.v[0] = kLarge;
+        info.v[1] = static_cast<VertexIndex>(big_.size() - 1);
         for (const Ring& ring : face.rings)
           big_.back().insert(big_.back().end(), ring.vertices.begin(), ring.vertices.end());
         std::sort(big_.back().begin(), big_.back().end());
@@ -133,28 +135,28 @@ class Finder {
     auto index = [&](double v, double origin) {
       return static_cast<std::uint16_t>(std::clamp(std::floor((v - origin) / cell), 0.0, 1023.0));
     };
-    // One sort key per (cell, face): the cell's 30 bits above the face's 32, so a sort groups each cell's
-    // faces in face order.
+    // One entry per (cell, face), packed as above, so a sort groups each cell's faces in face order. Room
+    // for eight cells a face (a box at most a cell wide on each axis): only what is written is touched.
     std::vector<std::uint64_t> entries;
-    entries.reserve(n * 4);
+    entries.reserve(n * 8);
     std::vector<FaceIndex> big;
     constexpr int kMaxCells = 64;
     for (std::size_t f = 0; f < n; ++f) {
-      FaceInfo& fi = info_[f];
-      const Box3& b = fi.box;
-      fi.lo[0] = index(b.lo.x - tol_, all.lo.x), fi.hi[0] = index(b.hi.x + tol_, all.lo.x);
-      fi.lo[1] = index(b.lo.y - tol_, all.lo.y), fi.hi[1] = index(b.hi.y + tol_, all.lo.y);
-      fi.lo[2] = index(b.lo.z - tol_, all.lo.z), fi.hi[2] = index(b.hi.z + tol_, all.lo.z);
-      const int cells = (fi.hi[0] - fi.lo[0] + 1) * (fi.hi[1] - fi.lo[1] + 1) * (fi.hi[2] - fi.lo[2] + 1);
+      const Box3& b = info_[f].box;
+      std::uint16_t lo[3], hi[3];
+      lo[0] = index(b.lo.x - tol_, all.lo.x), hi[0] = index(b.hi.x + tol_, all.lo.x);
+      lo[1] = index(b.lo.y - tol_, all.lo.y), hi[1] = index(b.hi.y + tol_, all.lo.y);
+      lo[2] = index(b.lo.z - tol_, all.lo.z), hi[2] = index(b.hi.z + tol_, all.lo.z);
+      const int cells = (hi[0] - lo[0] + 1) * (hi[1] - lo[1] + 1) * (hi[2] - lo[2] + 1);
       if (cells > kMaxCells) {
         big.push_back(static_cast<FaceIndex>(f));
         continue;
       }
-      for (std::uint64_t x = fi.lo[0]; x <= fi.hi[0]; ++x)
-        for (std::uint64_t y = fi.lo[1]; y <= fi.hi[1]; ++y)
-          for (std::uint64_t z = fi.lo[2]; z <= fi.hi[2]; ++z) {
+      for (std::uint64_t x = lo[0]; x <= hi[0]; ++x)
+        for (std::uint64_t y = lo[1]; y <= hi[1]; ++y)
+          for (std::uint64_t z = lo[2]; z <= hi[2]; ++z) {
             const std::uint64_t first =
-                (x == fi.lo[0] ? 1u : 0u) | (y == fi.lo[1] ? 2u : 0u) | (z == fi.lo[2] ? 4u : 0u);
+                (x == lo[0] ? 1u : 0u) | (y == lo[1] ? 2u : 0u) | (z == lo[2] ? 4u : 0u);
             entries.push_back(((x | (y << 10) | (z << 20)) << kCellShift) | first << kFirstShift | f);
           }
     }
@@ -240,19 +242,20 @@ class Finder {
   bool share_a_vertex(FaceIndex a, FaceIndex b) const {
     const FaceInfo& ia = info_[a];
     const FaceInfo& ib = info_[b];
-    if (ia.count && ib.count) {
-      for (int i = 0; i < ia.count; ++i)
-        for (int j = 0; j < ib.count; ++j)
-          if (ia.v[i] == ib.v[j]) return true;
-      return false;
+    if (ia.small() && ib.small()) {  // all sixteen, without branches: most pairs met are neighbours
+      bool shared = false;
+      for (int i = 0; i < 4; ++i)
+        for (int j = 0; j < 4; ++j) shared |= ia.v[i] == ib.v[j];
+      return shared;
     }
-    if (ia.count || ib.count) {  // a small face against a large one: look its few vertices up
-      const FaceInfo& small = ia.count ? ia : ib;
-      const std::vector<VertexIndex>& sorted = big_[(ia.count ? ib : ia).big];
-      return std::any_of(small.v, small.v + small.count,
+    if (ia.small() || ib.small()) {  // a small face against a large one: look its few vertices up
+      const FaceInfo& small = ia.small() ? ia : ib;
+      const std::vector<VertexIndex>& sorted = big_[static_cast<std::size_t>((ia.small() ? ib : ia).v[1])];
+      return std::any_of(small.v, small.v + 4,
                          [&](VertexIndex v) { return std::binary_search(sorted.begin(), sorted.end(), v); });
     }
-    const std::vector<VertexIndex>&sa = big_[ia.big], &sb = big_[ib.big];
+    const std::vector<VertexIndex>&sa = big_[static_cast<std::size_t>(ia.v[1])],
+          &sb = big_[static_cast<std::size_t>(ib.v[1])];
     for (std::size_t i = 0, j = 0; i < sa.size() && j < sb.size();) {  // merge the two sorted lists
       if (sa[i] == sb[j]) return true;
       sa[i] < sb[j] ? ++i : ++j;
