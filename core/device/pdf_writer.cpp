@@ -122,11 +122,16 @@ std::string pdf_date(const std::string& iso) {
   return "D:" + digits.substr(0, 14) + "Z";
 }
 
+// zlib's level 4: measured on the CGAL bunny's page (618 kB of operators) it takes 7.5 ms where the default
+// level 6 takes 31 ms — a sixth of the whole run — for a file 8 % larger (150 kB against 139 kB); on
+// fandisk's, 1.6 ms against 6.5 ms for 7 %. Level 1 gains little more time and costs 30 %.
+constexpr int kPageCompression = 4;
+
 std::string deflate(const std::string& text) {
   uLongf size = compressBound(static_cast<uLong>(text.size()));
   std::string out(size, '\0');
   if (compress2(reinterpret_cast<Bytef*>(out.data()), &size, reinterpret_cast<const Bytef*>(text.data()),
-                static_cast<uLong>(text.size()), Z_DEFAULT_COMPRESSION) != Z_OK)
+                static_cast<uLong>(text.size()), kPageCompression) != Z_OK)
     throw DeviceError("cannot compress a PDF page");
   out.resize(size);
   return out;
