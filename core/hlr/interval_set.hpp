@@ -60,8 +60,14 @@ class IntervalSet {
   }
   // The complement in [lo, hi] of the normalised set.
   std::vector<Interval> complement(double lo = 0, double hi = 1) {
-    normalize();
     std::vector<Interval> out;
+    complement_into(out, lo, hi);
+    return out;
+  }
+  // The same into `out` (cleared first), whose room is reused.
+  void complement_into(std::vector<Interval>& out, double lo = 0, double hi = 1) {
+    normalize();
+    out.clear();
     double cursor = lo;
     for (const Interval& iv : items_) {
       if (iv.lo > cursor) out.push_back({cursor, std::min(iv.lo, hi)});
@@ -69,7 +75,6 @@ class IntervalSet {
       if (cursor >= hi) break;
     }
     if (cursor < hi) out.push_back({cursor, hi});
-    return out;
   }
 
  private:

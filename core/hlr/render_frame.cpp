@@ -48,6 +48,7 @@ struct Worker {
   std::vector<std::uint32_t> stamp;
   OcclusionScratch scratch;
   IntervalSet hidden;
+  std::vector<Interval> visible;  // the complement of `hidden`, room reused
   std::size_t face_tests = 0;
   std::vector<VisibleSegment> buffer;  // the current chunk's pieces
 
@@ -96,7 +97,8 @@ struct Worker {
     };
     hidden.close_gaps(negligible);
     hidden.drop(negligible);
-    for (const Interval& v : hidden.complement()) emit(c, v.lo, v.hi, false, out);
+    hidden.complement_into(visible);
+    for (const Interval& v : visible) emit(c, v.lo, v.hi, false, out);
     if (options.include_hidden)
       for (const Interval& h : hidden.normalize()) emit(c, h.lo, h.hi, true, out);
   }
@@ -174,6 +176,7 @@ FrameResult render_frame(const Scene& scene, const Camera& camera, const HlrOpti
                   options,
                   world_from_view,
                   std::vector<std::uint32_t>(setup.occluders.size(), 0),
+                  {},
                   {},
                   {},
                   0,
