@@ -147,12 +147,17 @@ FrameResult render_frame(const Scene& scene, const Camera& camera, const HlrOpti
   struct WaitOnExit {
     tbb::task_group& group;
     bool armed;
-    void wait() {
-      if (armed) group.wait();
+    void wait() {  // rethrows what the search threw (out of memory)
+      if (!armed) return;
       armed = false;
+      group.wait();
     }
-    ~WaitOnExit() {
-      if (armed) group.wait();
+    ~WaitOnExit() {  // the frame is failing already: what the search threw too is not news
+      if (!armed) return;
+      try {
+        group.wait();
+      } catch (...) {
+      }
     }
   } search{crossing_search, options.intersection_lines && options.threads == 0};
   if (search.armed)
