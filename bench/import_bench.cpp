@@ -136,6 +136,16 @@ void StlBinary(benchmark::State& s) {
   run(s, stl_binary, [](const std::string& d) { return hlr::stdlib::import_stl(d, "mesh.stl"); });
 }
 
+// The solid of a mesh file, or none (the benchmark then reports the import's error and stops).
+std::optional<hlr::Solid> import_or_skip(const std::string& path, benchmark::State& state) {
+  try {
+    return hlr::stdlib::import_mesh(path).solid;
+  } catch (const hlr::stdlib::MeshImportError& e) {
+    state.SkipWithError(e.what());
+    return std::nullopt;
+  }
+}
+
 // Real meshes, when HLR_IMPORT_FILES lists them (paths separated by ':'): import_mesh() on each file as
 // `import()` runs it, reading included (the file stays in the page cache). bench/cgal_meshes.sh fetches
 // the CGAL demo meshes the issue measured (bunny00.off, fandisk_large.off).
@@ -146,63 +156,52 @@ const bool kFilesRegistered = [] {
     const std::string path(rest.substr(0, colon));
     rest = colon == std::string_view::npos ? std::string_view{} : rest.substr(colon + 1);
     if (path.empty()) continue;
-    benchmark::RegisterBenchmark(("File/" + std::filesystem::path(path).filename().string()).c_str(),
-                                 [path](benchmark::State& state) {
-                                   std::size_t faces = 0;
-                                   try {
-                                     for (auto _ : state) {
-                                       faces = hlr::stdlib::import_mesh(path).solid.faces.size();
-                                       benchmark::DoNotOptimize(faces);
-                                     }
-                                   } catch (const hlr::stdlib::MeshImportError& e) {
-                                     state.SkipWithError(e.what());
-                                     return;
-                                   }
-                                   const auto bytes = std::filesystem::file_size(path);
-                                   state.counters["faces"] = static_cast<double>(faces);
-                                   state.counters["MB"] = static_cast<double>(bytes) / 1e6;
-                                   state.SetBytesProcessed(static_cast<std::int64_t>(state.iterations()) *
-                                                           static_cast<std::int64_t>(bytes));
-                                 })
-        ->Unit(benchmark::kMillisecond);
+    const std::string file = std::filesystem::path(path).filename().string();
+    benchmark::RegisterBenchmark(("File/" + file).c_str(), [path](benchmark::State& state) {
+      std::size_t faces = 0;
+      try {
+        for (auto _ : state) {
+          faces = hlr::stdlib::import_mesh(path).solid.faces.size();
+          benchmark::DoNotOptimize(faces);
+        }
+      } catch (const hlr::stdlib::MeshImportError& e) {
+        state.SkipWithError(e.what());
+        return;
+      }
+      const auto bytes = std::filesystem::file_size(path);
+      state.counters["faces"] = static_cast<double>(faces);
+      state.counters["MB"] = static_cast<double>(bytes) / 1e6;
+      state.SetBytesProcessed(static_cast<std::int64_t>(state.iterations()) *
+                              static_cast<std::int64_t>(bytes));
+    })->Unit(benchmark::kMillisecond);
     // The search for the mesh's faces that cross each other (Solid::self_crossings, the first frame's
     // largest single cost on a scan), on a fresh copy each iteration (the copy is not timed).
-    benchmark::RegisterBenchmark(
-        ("FileSelfCrossings/" + std::filesystem::path(path).filename().string()).c_str(),
-        [path](benchmark::State& state) {
-          std::optional<hlr::Solid> mesh, copy;
-          try {
-            mesh.emplace(hlr::stdlib::import_mesh(path).solid);
-          } catch (const hlr::stdlib::MeshImportError& e) {
-            state.SkipWithError(e.what());
-            return;
-          }
-          std::size_t found = 0;
-          for (auto _ : state) {
-            state.PauseTiming();
-            copy.reset();
-            copy.emplace(*mesh);
-            state.ResumeTiming();
-            found = copy->self_crossings().size();
-            benchmark::DoNotOptimize(found);
-          }
-          state.counters["faces"] = static_cast<double>(mesh->faces.size());
-          state.counters["crossings"] = static_cast<double>(found);
-        })
+    benchmark::RegisterBenchmark(("FileSelfCrossings/" + file).c_str(),
+                                 [path](benchmark::State& state) {
+                                   const std::optional<hlr::Solid> mesh = import_or_skip(path, state);
+                                   if (!mesh) return;
+                                   std::optional<hlr::Solid> copy;
+                                   std::size_t found = 0;
+                                   for (auto _ : state) {
+                                     state.PauseTiming();
+                                     copy.reset();
+                                     copy.emplace(*mesh);
+                                     state.ResumeTiming();
+                                     found = copy->self_crossings().size();
+                                     benchmark::DoNotOptimize(found);
+                                   }
+                                   state.counters["faces"] = static_cast<double>(mesh->faces.size());
+                                   state.counters["crossings"] = static_cast<double>(found);
+                                 })
         ->Unit(benchmark::kMillisecond)
         ->UseRealTime();
-    // The first frame's hidden lines (self-crossing search included) from above and to the side of the
-    // mesh at three times its size, as bench/scenes' mesh scripts look at it.
+    // The first frame's hidden lines (self-crossing search included), the eye above and to the side of
+    // the mesh about 1.6 times its size from its centre, as bench/peers/whole_run.py looks at it.
     benchmark::RegisterBenchmark(
-        ("FileHiddenLines/" + std::filesystem::path(path).filename().string()).c_str(),
+        ("FileHiddenLines/" + file).c_str(),
         [path](benchmark::State& state) {
-          std::optional<hlr::Solid> mesh;
-          try {
-            mesh.emplace(hlr::stdlib::import_mesh(path).solid);
-          } catch (const hlr::stdlib::MeshImportError& e) {
-            state.SkipWithError(e.what());
-            return;
-          }
+          const std::optional<hlr::Solid> mesh = import_or_skip(path, state);
+          if (!mesh) return;
           hlr::Box3 box;
           for (const hlr::Point3& p : mesh->vertices) box.include(p);
           const hlr::Point3 centre = hlr::lerp(box.lo, box.hi, 0.5);

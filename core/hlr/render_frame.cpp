@@ -116,6 +116,30 @@ struct Examined {
   std::vector<Chunk> chunks;
 };
 
+// The pieces of the runs, which examined candidates 0 … n − 1 between them, in candidate order; each
+// chunk is released once copied.
+std::vector<VisibleSegment> in_candidate_order(std::vector<Examined>& runs, std::uint32_t n) {
+  std::vector<std::uint32_t> offset(n + 1, 0);  // of each candidate's pieces
+  for (const Examined& run : runs)
+    for (std::size_t k = 0; k < run.chunks.size(); ++k)
+      for (std::size_t j = 0; j < run.chunks[k].counts.size(); ++j)
+        offset[run.order[k * Examined::kChunk + j] + 1] = run.chunks[k].counts[j];
+  for (std::uint32_t i = 0; i < n; ++i) offset[i + 1] += offset[i];
+  std::vector<VisibleSegment> segments(offset[n]);
+  for (Examined& run : runs)
+    for (std::size_t k = 0; k < run.chunks.size(); ++k) {
+      Examined::Chunk& chunk = run.chunks[k];
+      const VisibleSegment* from = chunk.pieces.data();
+      for (std::size_t j = 0; j < chunk.counts.size(); ++j) {
+        std::copy(from, from + chunk.counts[j],
+                  segments.begin() + offset[run.order[k * Examined::kChunk + j]]);
+        from += chunk.counts[j];
+      }
+      chunk = Examined::Chunk{};
+    }
+  return segments;
+}
+
 // Restricts candidates [from, end) to the picture frame, sets their tolerances and widens `domain` to
 // them; drops what lies outside the frame. Returns the new end.
 std::size_t clip_candidates(FrameSetup& setup, std::size_t from, const Camera& camera, Rect2& domain) {
@@ -248,9 +272,7 @@ FrameResult render_frame(const Scene& scene, const Camera& camera, const HlrOpti
     const std::size_t end = clip_candidates(setup, edges, camera, wider);
     if (end > edges) {
       // The grid holds only the occluders that meet its domain: lines beyond it need a wider grid.
-      const bool beyond = domain.empty() || wider.xmin < domain.xmin || wider.ymin < domain.ymin ||
-                          wider.xmax > domain.xmax || wider.ymax > domain.ymax;
-      if (beyond) {
+      if (!domain.contains({wider.xmin, wider.ymin}) || !domain.contains({wider.xmax, wider.ymax})) {
         grid = std::make_unique<const FaceGrid>(setup, wider, options.threads);
         for (Worker& w : workers) w.grid = grid.get();
       }
@@ -268,24 +290,7 @@ FrameResult render_frame(const Scene& scene, const Camera& camera, const HlrOpti
   // The inputs are no longer needed; free them before the join, which briefly holds the output twice.
   grid.reset();
   setup = FrameSetup{};
-  std::vector<std::uint32_t> offset(n + 1, 0);  // of each candidate's pieces in the result
-  for (const Examined& run : runs)
-    for (std::size_t k = 0; k < run.chunks.size(); ++k)
-      for (std::size_t j = 0; j < run.chunks[k].counts.size(); ++j)
-        offset[run.order[k * Examined::kChunk + j] + 1] = run.chunks[k].counts[j];
-  for (std::uint32_t i = 0; i < n; ++i) offset[i + 1] += offset[i];
-  result.segments.resize(offset[n]);
-  for (Examined& run : runs)
-    for (std::size_t k = 0; k < run.chunks.size(); ++k) {
-      Examined::Chunk& chunk = run.chunks[k];
-      const VisibleSegment* from = chunk.pieces.data();
-      for (std::size_t j = 0; j < chunk.counts.size(); ++j) {
-        std::copy(from, from + chunk.counts[j],
-                  result.segments.begin() + offset[run.order[k * Examined::kChunk + j]]);
-        from += chunk.counts[j];
-      }
-      chunk = Examined::Chunk{};
-    }
+  result.segments = in_candidate_order(runs, n);
   if (options.coincident_once) remove_covered_pieces(result.segments, options.threads);
   result.stats.face_tests = face_tests;
   result.stats.visible_segments = static_cast<std::size_t>(std::count_if(
