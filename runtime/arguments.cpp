@@ -59,6 +59,8 @@ std::filesystem::path CallArgs::script_directory() const {
   return entry ? entry->path.parent_path() : std::filesystem::current_path();
 }
 
+const FileAccess* CallArgs::file_access() const { return sources_ ? &sources_->access() : nullptr; }
+
 void CallArgs::note_input(const std::filesystem::path& path) const {
   if (sources_) sources_->add_input(path);
 }

@@ -19,6 +19,7 @@
 namespace hlr::runtime {
 
 class SourceTable;
+class FileAccess;
 
 struct Arg {
   std::string label;  // empty for a positional argument
@@ -71,6 +72,8 @@ class CallArgs {
   // The directory of the file the call is written in: built-ins that read files (import) resolve
   // relative paths against it. The working directory when unknown.
   std::filesystem::path script_directory() const;
+  // What the run's scripts may read (file_access.hpp); nullptr when the call has no program (C++ tests).
+  const FileAccess* file_access() const;
   // Records a file a built-in reads as an input of the run (see SourceTable::add_input).
   void note_input(const std::filesystem::path& path) const;
 

@@ -6,11 +6,13 @@
 #include <map>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <string>
 #include <tuple>
 
 #include "core/format_number.hpp"
 #include "runtime/builtins.hpp"
+#include "runtime/file_access.hpp"
 #include "runtime/format_value.hpp"
 #include "stdlib/mesh_import.hpp"
 
@@ -68,6 +70,10 @@ Value import_(CallArgs& call) {
 
   fs::path path(written);
   if (path.is_relative()) path = call.script_directory() / path;
+  // Before anything is asked of the file, even whether it exists (file_access.hpp).
+  if (const FileAccess* access = call.file_access())
+    if (const std::optional<std::string> refusal = access->read_refusal(path, written))
+      fail_import(b.span(0), "cannot import " + *refusal, access->allow_hint(path), ErrorKind::Denied);
   std::error_code ec;
   const fs::file_status status = fs::status(path, ec);
   if (!fs::exists(status))

@@ -38,7 +38,15 @@ int report(std::ostream& err, const EvalError& e, const Program* program) {
   } else {
     print_diagnostics(err, e.diagnostics, program->sources());
   }
-  return e.kind == ErrorKind::Input ? kExitInput : kExitScript;
+  switch (e.kind) {
+    case ErrorKind::Input:
+      return kExitInput;
+    case ErrorKind::Denied:
+      return kExitDenied;
+    case ErrorKind::Script:
+      break;
+  }
+  return kExitScript;
 }
 
 // A device failure; at the script's `output` statement when the name came from there.
@@ -237,7 +245,8 @@ int run_program(const Program& program, const CliOptions& o, std::ostream& out, 
 // The demo is a built-in script (runtime/demo_script.cpp) on the normal path, to carrier.pdf unless -o.
 int run_demo(CliOptions o, std::ostream& out, std::ostream& err) {
   const auto start = Clock::now();
-  const auto program = Program::from_text("hlrscript-demo.hls", demo_script(o.demo_frames));
+  const auto program =
+      Program::from_text("hlrscript-demo.hls", demo_script(o.demo_frames), "hlrscript-demo.hls", o.access);
   if (!program->parsed()) {  // never: the text is ours
     print_diagnostics(err, program->syntax_errors(), program->sources());
     return kExitInternal;
@@ -274,7 +283,7 @@ int run_script(const CliOptions& o, std::ostream& out, std::ostream& err,
   const auto start = Clock::now();
   std::unique_ptr<Program> program;
   try {
-    program = Program::load(o.script, o.script);
+    program = Program::load(o.script, o.script, o.access);
   } catch (const EvalError& e) {
     err << "hlrscript: error: " << e.what() << "\n";
     return kExitInput;

@@ -21,6 +21,7 @@ enum ExitCode : int {
   kExitInput = 66,
   kExitInternal = 70,
   kExitOutput = 73,
+  kExitDenied = 77,        // a script reached outside what it may read or write (sysexits' EX_NOPERM)
   kExitInterrupted = 130,  // 128 + SIGINT, as shells report it
 };
 
@@ -36,6 +37,7 @@ struct CliOptions {
   unsigned jobs = 0;  // --jobs: threads for frames and the work inside them; 0: one per core
   bool stats = false;
   bool verbose = false;         // --verbose: also the notes on what the script asked to accept
+  AccessOptions access;         // --allow-path, --out-dir
   DeviceOptions device;         // --paper, --margin, --scale, --dpi, --plotter, --pen-order, ...
   int demo_frames = 12;         // --demo --frames N
   bool repl_requested = false;  // `hlrscript repl` / --repl: a REPL even when stdin is not a terminal

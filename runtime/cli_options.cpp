@@ -3,6 +3,7 @@
 #include <boost/program_options.hpp>
 #include <charconv>
 #include <cstdio>
+#include <filesystem>
 #include <ostream>
 #include <sstream>
 
@@ -59,7 +60,12 @@ po::options_description visible_options() {
       ("pen-order", po::value<std::string>()->value_name("none|greedy|optimized"),
        "pen planning: file order, greedy nearest-end, or optimized (default)")  //
       ("plan-budget", po::value<std::string>()->value_name("MS"),
-       "time budget of the optimized pen plan per frame (default 200 ms)")                                  //
+       "time budget of the optimized pen plan per frame (default 200 ms)")  //
+      ("allow-path", po::value<std::vector<std::string>>()->value_name("DIR")->composing(),
+       "let the script include and import files below DIR too (repeatable); by default it reads only below "
+       "its own folder and the library modules")  //
+      ("out-dir", po::value<std::string>()->value_name("DIR"),
+       "where the outputs the script names go (default: the working directory); -o may name any path")      //
       ("demo", "render the built-in demo (Desens' aircraft carrier); --frames N sets its approach frames")  //
       ("quiet,q", "no progress line on a terminal")                                                         //
       ("verbose", "also print notes on what the script's options accept (warped faces, crossing holes)")    //
@@ -85,7 +91,8 @@ constexpr const char* kExamples =
     "  hlrscript --demo -o carrier.pdf                   # the built-in demo\n"
     "\n"
     "exit codes: 0 ok, 64 usage error, 65 error in the script, 66 a file cannot be read,\n"
-    "            70 internal error, 73 an output cannot be written, 130 stopped (Ctrl-C)\n";
+    "            70 internal error, 73 an output cannot be written, 77 the script reached outside\n"
+    "            what it may read or write (--allow-path, --out-dir), 130 stopped (Ctrl-C)\n";
 
 std::nullopt_t usage_error(std::ostream& err, const std::string& message) {
   err << "hlrscript: error: " << message << "\n"
@@ -162,6 +169,30 @@ bool parse_device_options(const po::variables_map& vm, DeviceOptions& d, std::st
       error = "--pen-order takes none, greedy or optimized, not '" + v + "'";
       return false;
     }
+  }
+  return true;
+}
+
+// A folder named by --allow-path or --out-dir must exist: a typo would otherwise allow nothing (or send
+// the outputs nowhere) without a word.
+bool parse_access_options(const po::variables_map& vm, AccessOptions& a, std::string& error) {
+  const auto folder = [&](const std::string& option, const std::string& dir) {
+    std::error_code ec;
+    if (dir.empty() || !std::filesystem::is_directory(dir, ec)) {
+      error = "--" + option + " " + dir + ": no such folder";
+      return false;
+    }
+    return true;
+  };
+  if (vm.count("allow-path"))
+    for (const std::string& dir : vm["allow-path"].as<std::vector<std::string>>()) {
+      if (!folder("allow-path", dir)) return false;
+      a.allow_paths.emplace_back(dir);
+    }
+  if (vm.count("out-dir")) {
+    const std::string dir = vm["out-dir"].as<std::string>();
+    if (!folder("out-dir", dir)) return false;
+    a.out_dir = dir;
   }
   return true;
 }
@@ -282,6 +313,7 @@ std::optional<CliOptions> parse_cli(int argc, const char* const argv[], std::ost
   o.verbose = vm.count("verbose") > 0;
   o.quiet = vm.count("quiet") > 0;
   if (!parse_device_options(vm, o.device, error)) return usage_error(err, error);
+  if (!parse_access_options(vm, o.access, error)) return usage_error(err, error);
   if (o.mode == CliOptions::Mode::Check && o.output) return usage_error(err, "check writes nothing; drop -o");
   return o;
 }

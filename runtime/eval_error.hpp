@@ -14,6 +14,7 @@ namespace hlr::runtime {
 enum class ErrorKind {
   Script,  // the script is wrong: syntax, evaluation, geometry (exit 65)
   Input,   // a file it names cannot be read (exit 66)
+  Denied,  // a file it names is outside what a script may touch (exit 77; file_access.hpp)
 };
 
 class EvalError : public std::runtime_error {

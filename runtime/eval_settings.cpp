@@ -1,9 +1,11 @@
 // Settings statements (animate, output, style) and include; paper, pen and plotter are in
 // eval_devices.cpp. Each setting may be given once per evaluation; a second one is an error pointing at
 // the first, so two files cannot silently disagree.
+#include <cctype>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
+#include <tuple>
 
 #include "core/format_number.hpp"
 #include "runtime/eval_detail.hpp"
@@ -84,11 +86,6 @@ void Evaluator::exec_style(const lang::StyleStmt& style, const lang::Stmt& stmt,
   out_.hidden_span = stmt.span;
 }
 
-std::filesystem::path stdlib_module_directory() {
-  if (const char* dir = std::getenv("HLRSCRIPT_STDLIB"); dir && *dir) return dir;
-  return HLR_STDLIB_MODULES;
-}
-
 IncludeTarget include_target(const SourceTable& sources, const lang::IncludeStmt& include) {
   namespace fs = std::filesystem;
   const SourceEntry* from = sources.entry(include.path_span.file);
@@ -104,13 +101,35 @@ IncludeTarget include_target(const SourceTable& sources, const lang::IncludeStmt
   t.shown = t.library || fs::path(include.path).is_absolute()
                 ? include.path
                 : (shown_base / include.path).lexically_normal().string();
+  // Checked before the file is opened: a file the script may not read is never read, so no message can
+  // quote it. Only scripts are included; anything else (a mesh, a key, a log) is not even parsed.
+  const FileAccess& access = sources.access();
+  std::string extension = t.path.extension().string();
+  for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  if (const std::optional<std::string> refusal = access.read_refusal(t.path, include.path)) {
+    t.refusal = "cannot include " + *refusal;
+    t.hint = access.allow_hint(t.path);
+  } else if (extension != ".hls") {
+    t.refusal = "cannot include '" + include.path + "': include reads hlrscript scripts (.hls) only";
+    t.hint =
+        "include takes scripts ending in .hls; a mesh file is read with import(\"" + include.path + "\")";
+    t.refusal_kind = ErrorKind::Script;
+  }
   return t;
 }
 
 void Evaluator::exec_include(const lang::IncludeStmt& include, const ScopePtr& scope) {
   const SourceEntry* from = sources_.entry(include.path_span.file);
-  const auto [target, shown, library] = include_target(sources_, include);
   if (include.path.empty()) fail(include.path_span, "the include path is empty");
+  const IncludeTarget t = include_target(sources_, include);
+  const auto& [target, shown, library] = std::tie(t.path, t.shown, t.library);
+  if (!t.refusal.empty()) {
+    lang::Diagnostic d;
+    d.span = include.path_span;
+    d.message = t.refusal;
+    d.hint = t.hint;
+    throw EvalError(std::move(d), t.refusal_kind);
+  }
 
   std::string error;
   const SourceEntry* entry = sources_.load(target, shown, error);

@@ -25,15 +25,14 @@
 
 namespace hlr::runtime {
 
-// Where `include "std/NAME.hls"` finds the library modules written in hlrscript: $HLRSCRIPT_STDLIB, else
-// the source tree's stdlib/modules (compiled in).
-std::filesystem::path stdlib_module_directory();
-
-// The file an `include` statement names, and how messages show it.
+// The file an `include` statement names, and how messages show it. `refusal` (with `hint`) says why the
+// script may not read it (file_access.hpp; also a file that is not a script): then it is never opened.
 struct IncludeTarget {
   std::filesystem::path path;
   std::string shown;
   bool library = false;  // "std/NAME.hls"
+  std::string refusal, hint;
+  ErrorKind refusal_kind = ErrorKind::Denied;
 };
 IncludeTarget include_target(const SourceTable& sources, const lang::IncludeStmt& include);
 

@@ -75,7 +75,18 @@ OutputTarget target_for_frame(const std::optional<std::string>& cli_pattern, con
     const std::string problem = output_problem(target.path, program);
     if (!problem.empty()) throw RunError("-o " + problem, hint, 64);
   } else if (frame.script_output) {
-    target.path = frame.script_output->name;
+    const FileAccess& access = program.sources().access();
+    const std::string& name = frame.script_output->name;
+    target.path = access.output_path(name);
+    // A downloaded script must not write over the user's files elsewhere; -o, typed by the user, may.
+    if (const std::optional<std::string> refusal = access.write_refusal(target.path, name)) {
+      lang::Diagnostic d;
+      d.span = frame.script_output->span;
+      d.message = "output " + *refusal;
+      d.hint = "to write there, name the file on the command line: -o " + name +
+               (access.out_dir_given() ? "" : " (or choose the folder with --out-dir DIR)");
+      throw EvalError(std::move(d), ErrorKind::Denied);
+    }
     const std::string problem = output_problem(target.path, program);
     if (!problem.empty()) fail(frame.script_output->span, "output " + problem, hint);
     target.span = frame.script_output->span;
@@ -83,7 +94,7 @@ OutputTarget target_for_frame(const std::optional<std::string>& cli_pattern, con
     // "<stdin>" and "<session>" name no file: their output is stdin.pdf, session.pdf.
     std::string stem = fs::path(program.main().source->name()).stem().string();
     std::erase_if(stem, [](char c) { return c == '<' || c == '>'; });
-    target.path = stem + ".pdf";
+    target.path = program.sources().access().output_path(stem + ".pdf");
     const std::string problem = output_problem(target.path, program);
     if (!problem.empty()) throw RunError(problem, "name the output with -o OUT.pdf", 64);
   }

@@ -18,8 +18,9 @@ Program::Program(std::unique_ptr<SourceTable> sources, const SourceEntry* main)
   });
 }
 
-std::unique_ptr<Program> Program::load(const std::filesystem::path& path, const std::string& display_name) {
-  auto sources = std::make_unique<SourceTable>();
+std::unique_ptr<Program> Program::load(const std::filesystem::path& path, const std::string& display_name,
+                                       const AccessOptions& access) {
+  auto sources = std::make_unique<SourceTable>(FileAccess(resolved_path(path).parent_path(), access));
   std::string error;
   const SourceEntry* main = sources->load(path, display_name, error);
   if (!main) throw EvalError({}, ErrorKind::Input, error);
@@ -27,8 +28,8 @@ std::unique_ptr<Program> Program::load(const std::filesystem::path& path, const 
 }
 
 std::unique_ptr<Program> Program::from_text(const std::string& display_name, const std::string& text,
-                                            const std::filesystem::path& path) {
-  auto sources = std::make_unique<SourceTable>();
+                                            const std::filesystem::path& path, const AccessOptions& access) {
+  auto sources = std::make_unique<SourceTable>(FileAccess(resolved_path(path).parent_path(), access));
   const SourceEntry* main = sources->add_text(display_name, text, path);
   return std::unique_ptr<Program>(new Program(std::move(sources), main));
 }

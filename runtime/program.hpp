@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "runtime/file_access.hpp"
 #include "runtime/frame_scene.hpp"
 #include "runtime/source_table.hpp"
 
@@ -20,10 +21,14 @@ class Program {
  public:
   // Reads and parses the script. Throws EvalError of kind Input (no diagnostics, the reason in what())
   // when it cannot be read. A script with syntax errors loads, with syntax_errors() set.
-  static std::unique_ptr<Program> load(const std::filesystem::path& path, const std::string& display_name);
+  // `access` adds the folders the script may read and where its outputs go (file_access.hpp); the
+  // script's own folder is always readable.
+  static std::unique_ptr<Program> load(const std::filesystem::path& path, const std::string& display_name,
+                                       const AccessOptions& access = {});
   // A script given as text; includes resolve against `path`'s directory.
   static std::unique_ptr<Program> from_text(const std::string& display_name, const std::string& text,
-                                            const std::filesystem::path& path = "script.hls");
+                                            const std::filesystem::path& path = "script.hls",
+                                            const AccessOptions& access = {});
 
   bool parsed() const { return main_->script.has_value(); }
   const std::vector<lang::Diagnostic>& syntax_errors() const { return main_->diagnostics; }

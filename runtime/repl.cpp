@@ -24,7 +24,7 @@ int run_stdin_script(const CliOptions& o, std::istream& in, std::ostream& out, s
   std::ostringstream text;
   text << in.rdbuf();
   const auto program =
-      Program::from_text("<stdin>", text.str(), std::filesystem::current_path() / "stdin.hls");
+      Program::from_text("<stdin>", text.str(), std::filesystem::current_path() / "stdin.hls", o.access);
   if (!program->parsed()) {
     print_diagnostics(err, program->syntax_errors(), program->sources());
     return kExitScript;
@@ -40,6 +40,7 @@ int run_repl(const CliOptions& o, std::istream& in, bool terminal, std::ostream&
   if (!terminal && !o.repl_requested) return run_stdin_script(o, in, out, err);
 
   ReplSession session(terminal_size(STDOUT_FILENO));
+  session.set_access(o.access);
   // Asked once, before line editing owns the terminal: the answer does not change within a session.
   const TerminalGraphics graphics =
       terminal ? detect_terminal_graphics(STDIN_FILENO, STDOUT_FILENO) : TerminalGraphics::Braille;

@@ -120,9 +120,10 @@ std::string ReplSession::join(const std::vector<Chunk>& chunks) const {
 }
 
 namespace {
-std::unique_ptr<Program> session_program(const std::string& text, const std::optional<fs::path>& loaded) {
+std::unique_ptr<Program> session_program(const std::string& text, const std::optional<fs::path>& loaded,
+                                         const AccessOptions& access) {
   const fs::path where = loaded ? fs::absolute(*loaded) : fs::current_path() / "session.hls";
-  return Program::from_text("<session>", text, where);
+  return Program::from_text("<session>", text, where, access);
 }
 }  // namespace
 
@@ -198,7 +199,7 @@ ReplReply ReplSession::accept(const std::string& text) {
   // One evaluation per arrangement tried: the values shown come from the one that works.
   std::string values;
   auto attempt = [&](const std::vector<Chunk>& chunks, std::unique_ptr<Program>& program) {
-    program = session_program(join(chunks), loaded_);
+    program = session_program(join(chunks), loaded_, access_);
     values.clear();
     return evaluate_frame(*program, frame_, [&](const Evaluator& e) {
       for (const std::string& name : chunk.names)
@@ -242,7 +243,7 @@ ReplReply ReplSession::accept(const std::string& text) {
 }
 
 ReplReply ReplSession::evaluate_expression(const std::string& text) {
-  const auto program = session_program(join(chunks_) + "let " + kValueName + " = " + text, loaded_);
+  const auto program = session_program(join(chunks_) + "let " + kValueName + " = " + text, loaded_, access_);
   if (!program->parsed()) return error(diagnostics_text(program->syntax_errors(), *program));
   try {
     std::string shown;
@@ -258,7 +259,7 @@ ReplReply ReplSession::evaluate_expression(const std::string& text) {
 }
 
 std::optional<ReplSession::View> ReplSession::view(std::string& message) const {
-  const auto program = session_program(view_text(chunks_), loaded_);
+  const auto program = session_program(view_text(chunks_), loaded_, access_);
   View v;
   try {
     v.scene = evaluate_frame(*program, frame_);
@@ -332,7 +333,7 @@ ReplReply ReplSession::stats() {
 }
 
 ReplReply ReplSession::scene() {
-  const auto program = session_program(join(chunks_), loaded_);
+  const auto program = session_program(join(chunks_), loaded_, access_);
   try {
     const FrameScene s = evaluate_frame(*program, frame_);
     std::string out;
@@ -354,7 +355,7 @@ ReplReply ReplSession::scene() {
 }
 
 ReplReply ReplSession::frames() {
-  const auto program = session_program(join(chunks_), loaded_);
+  const auto program = session_program(join(chunks_), loaded_, access_);
   try {
     const FrameScene first = evaluate_frame(*program, 0);
     if (!first.animation) return done("one frame (no animate statement); :frame 0 is the drawing\n");
@@ -405,7 +406,7 @@ ReplReply ReplSession::save(const std::string& file) {
 }
 
 ReplReply ReplSession::render(const std::string& file) {
-  const auto program = session_program(view_text(chunks_), loaded_);
+  const auto program = session_program(view_text(chunks_), loaded_, access_);
   CliOptions o;
   o.mode = CliOptions::Mode::Repl;  // the REPL's Ctrl-C handler stays; a stop is reported as the REPL's
   o.script = "<session>";
@@ -427,7 +428,7 @@ ReplReply ReplSession::load(const fs::path& path) {
   if (!parsed.ok()) return error(diagnostics_text(parsed));
   Chunk chunk{text, {}, {}};
   names_of(*parsed.script, chunk.names, chunk.cameras);
-  const auto program = session_program(text, path);
+  const auto program = session_program(text, path, access_);
   try {
     const FrameScene scene = evaluate_frame(*program, 0);
     undo_.push_back(chunks_);

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "core/camera/camera_adjust.hpp"
+#include "runtime/file_access.hpp"
 #include "runtime/terminal_graphics.hpp"
 #include "runtime/terminal_picture.hpp"
 
@@ -43,6 +44,9 @@ class ReplSession {
   std::vector<std::string> completions(const std::string& line, const std::string& word) const;
 
   void set_terminal_size(TerminalSize size) { size_ = size; }
+  // The folders the session's scripts may read beyond their own, and where their outputs go (--allow-path,
+  // --out-dir).
+  void set_access(AccessOptions access) { access_ = std::move(access); }
   // How :show draws: braille text, or the real picture of `pixels` for kitty and sixel terminals.
   void set_graphics(TerminalGraphics kind, PixelSize pixels) {
     graphics_ = kind;
@@ -91,6 +95,7 @@ class ReplSession {
   std::optional<CameraAdjustment> step_;         // :orbit, :zoom, :dolly since the camera was chosen
   std::string stepped_name_;                     // the adjusted camera's name in view_text()
   std::optional<std::filesystem::path> loaded_;  // for :reload
+  AccessOptions access_;
 };
 
 // The commands and what they do, one line each.

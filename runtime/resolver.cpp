@@ -97,6 +97,10 @@ class Resolver {
       return nullptr;
     }
     const IncludeTarget target = include_target(sources_, include);
+    if (!target.refusal.empty()) {  // the evaluator says why
+      missing_include_ = true;
+      return nullptr;
+    }
     std::string error;
     const SourceEntry* entry = sources_.load(target.path, target.shown, error);
     if (entry && entry->script) return entry;
@@ -338,7 +342,7 @@ class Resolver {
   SourceTable& sources_;
   StaticScope frame_globals_;
   bool uses_frames_ = false;
-  bool missing_include_ = false;  // an include that cannot be read or parsed: names may come from it
+  bool missing_include_ = false;     // an include that cannot be read or parsed: names may come from it
   std::set<std::string> unknown_;    // names reported as unknown
   std::set<lang::FileId> included_;  // files whose statements were walked, each once as the evaluator does
   std::vector<lang::Diagnostic> errors_;

@@ -10,11 +10,13 @@
 #include <mutex>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "lang/ast.hpp"
 #include "lang/diagnostic.hpp"
 #include "lang/source.hpp"
+#include "runtime/file_access.hpp"
 
 namespace hlr::runtime {
 
@@ -28,6 +30,10 @@ struct SourceEntry {
 
 class SourceTable {
  public:
+  // `access` says which files the run's scripts may read and where they may write (file_access.hpp).
+  explicit SourceTable(FileAccess access) : access_(std::move(access)) {}
+  const FileAccess& access() const { return access_; }
+
   // Reads and parses `path` once; later calls return the same entry. `display_name` is how diagnostics
   // name the file. Returns nullptr and sets `error` when the file cannot be read.
   const SourceEntry* load(const std::filesystem::path& path, const std::string& display_name,
@@ -48,6 +54,7 @@ class SourceTable {
   const SourceEntry* add(std::filesystem::path path, const std::string& display_name,
                          const std::string& text);
 
+  FileAccess access_;
   mutable std::mutex mutex_;
   std::deque<SourceEntry> entries_;  // index = FileId
   std::map<std::filesystem::path, lang::FileId> by_path_;

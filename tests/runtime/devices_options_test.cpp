@@ -199,7 +199,7 @@ TEST(DevicesErrors, UnknownPlotterInTheScriptIsLocatedAtItsName) {
   const std::string out = (dir.path() / "x.hpgl").string();
   const std::string first_line = "output \"" + out + "\" plotter nosuch";
   const std::string script = dir.write("p.hls", first_line + "\n" + kCube).string();
-  const Result r = run({script});
+  const Result r = run({script, "--out-dir", dir.path().string()});
   EXPECT_EQ(r.code, 65);
   // The column of 'nosuch' (1-based): after `output "PATH" plotter `.
   const std::string at = script + ":1:" + std::to_string(first_line.find("nosuch") + 1) + ": error: ";

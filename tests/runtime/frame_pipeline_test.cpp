@@ -201,7 +201,8 @@ TEST_F(FramePipeline, ADeviceRefusingTheScriptsPageIsReportedAtItsOutputStatemen
                                     << "\" plotter hp7475a\n"
                                     << "if frame == 3 { paper A0 }\n";
   for (const char* jobs : {"1", "2"}) {
-    const test::CliResult r = test::run({(dir_ / "paper.hls").string(), "--jobs", jobs});
+    const test::CliResult r =
+        test::run({(dir_ / "paper.hls").string(), "--jobs", jobs, "--out-dir", dir_.string()});
     EXPECT_EQ(r.code, 73) << r.err;
     EXPECT_NE(r.err.find("paper.hls:4:8: error: HPGL: plotter 'hp7475a' takes no 1189 × 841 mm page"),
               std::string::npos)

@@ -63,7 +63,7 @@ inline std::string printed_error(const std::string& text) {
 
 // str() of `expr` evaluated after the statements of `prelude`, or "error: line:col: message".
 inline std::string value(const std::string& expr, const std::string& prelude = "") {
-  SourceTable table;
+  SourceTable table(FileAccess(std::filesystem::current_path(), {}));
   const SourceEntry* entry =
       table.add_text("test.hls", prelude + "\nlet result__ = " + expr + "\n", "test.hls");
   if (!entry->script) return "syntax error: " + line_col(entry->diagnostics.front());
