@@ -1,6 +1,6 @@
 // The hlrscript command: load → evaluate frame 0 (animation length, output names, camera) → select frames
-// → evaluate and render them → write every output atomically. Nothing is written unless every frame
-// succeeded. Errors become exit statuses here and nowhere else.
+// → evaluate and render them → write every output atomically (a failed frame keeps only whole files:
+// frame_pipeline.hpp). Errors become exit statuses here and nowhere else.
 #include "runtime/cli.hpp"
 
 #include <algorithm>
@@ -93,6 +93,39 @@ int report(std::ostream& err, const RunInterrupted& e, const std::vector<int>& a
   return kExitInterrupted;
 }
 
+// Each failed frame's own error, then what was kept: "frames 7 and 30 of 48 failed; kept 46 complete
+// files (0-6,8-29,31-47)". The status is the first failure's.
+int report(std::ostream& err, const FramesFailed& e, const std::vector<int>& asked, const Program& program) {
+  int code = kExitInternal;
+  std::vector<int> failed;
+  for (const FramesFailed::Failure& f : e.failures) {
+    failed.push_back(f.frame);
+    int c = kExitInternal;
+    try {
+      std::rethrow_exception(f.error);
+    } catch (const EvalError& x) {
+      c = report(err, x, &program);
+    } catch (const RunError& x) {
+      c = report(err, x);
+    } catch (const OutputError& x) {
+      c = report(err, x, program);
+    } catch (const std::exception& x) {
+      err << "hlrscript: internal error in frame " << f.frame << ": " << x.what() << "\n";
+    }
+    if (code == kExitInternal) code = c;
+  }
+  err << "hlrscript: " << (failed.size() == 1 ? "frame " : "frames ") << frame_list_text(failed) << " of "
+      << asked.size() << " failed; kept " << e.files.size()
+      << (e.files.size() == 1 ? " complete file" : " complete files")
+      << (e.frames_done.empty() ? "" : " (frames " + frame_list_text(e.frames_done) + ")")
+      << ", none partial\n";
+  std::vector<int> rest;
+  std::set_difference(asked.begin(), asked.end(), e.frames_done.begin(), e.frames_done.end(),
+                      std::back_inserter(rest));
+  if (!rest.empty()) err << "hint: once fixed, --frames " << frame_list_text(rest) << " renders the rest\n";
+  return code;
+}
+
 void print_stats(std::ostream& err, const PipelineResult& result) {
   for (const FrameRecord& f : result.frames) {
     char line[320];
@@ -170,6 +203,7 @@ int run_program(const Program& program, const CliOptions& o, std::ostream& out, 
     options.jobs = o.jobs;
     options.render = o.mode != CliOptions::Mode::Check;
     options.keep_records = o.stats;  // a long sequence keeps no per-frame record unless asked
+    options.keep_going = o.keep_going;
     options.on_frame = [&](std::size_t done, std::size_t total) { progress.update(done, total); };
 
     // Mistakes visible in frame 0 are reported before any rendering: no camera, a bad output name, a
@@ -231,6 +265,9 @@ int run_program(const Program& program, const CliOptions& o, std::ostream& out, 
     return report(err, e);
   } catch (const OutputError& e) {
     return report(err, e, program);
+  } catch (const FramesFailed& e) {
+    progress.clear();
+    return report(err, e, asked, program);
   } catch (const RunInterrupted& e) {
     progress.clear();
     return report(err, e, asked);

@@ -36,6 +36,7 @@ struct CliOptions {
   std::optional<bool> hidden;
   unsigned jobs = 0;  // --jobs: threads for frames and the work inside them; 0: one per core
   bool stats = false;
+  bool keep_going = false;      // --keep-going: render the other frames when one fails
   bool verbose = false;         // --verbose: also the notes on what the script asked to accept
   AccessOptions access;         // --allow-path, --out-dir
   DeviceOptions device;         // --paper, --margin, --scale, --dpi, --plotter, --pen-order, ...

@@ -36,8 +36,9 @@ po::options_description visible_options() {
       ("jobs,j", po::value<std::string>()->value_name("N"),
        "use N threads for frames and the hidden lines inside them (default 0: one per core)")  //
       ("hidden", po::value<std::string>()->value_name("off|dashed"),
-       "hidden lines: off, or dashed (overrides the script)")                       //
-      ("stats", "print per-frame statistics (hidden-line and pen plan) to stderr")  //
+       "hidden lines: off, or dashed (overrides the script)")                                     //
+      ("keep-going", "when a frame fails, render the other frames anyway (the run still fails)")  //
+      ("stats", "print per-frame statistics (hidden-line and pen plan) to stderr")                //
       ("paper", po::value<std::string>()->value_name("SIZE"),
        "paper: A0-A6, Letter, Legal, Tabloid or WxH in mm (e.g. 420x297); overrides the script")      //
       ("landscape", "landscape paper (the default)")                                                  //
@@ -310,6 +311,7 @@ std::optional<CliOptions> parse_cli(int argc, const char* const argv[], std::ost
     o.hidden = v == "dashed";
   }
   o.stats = vm.count("stats") > 0;
+  o.keep_going = vm.count("keep-going") > 0;
   o.verbose = vm.count("verbose") > 0;
   o.quiet = vm.count("quiet") > 0;
   if (!parse_device_options(vm, o.device, error)) return usage_error(err, error);

@@ -34,6 +34,7 @@ double seconds_since(Clock::time_point start) {
 // One frame's journey through the pipeline: made by the parallel stage, consumed in order.
 struct FrameJob {
   std::size_t index = 0;
+  int frame = 0;
   FrameRecord record;
   OutputTarget target;
   std::shared_ptr<const Device> device;
@@ -163,9 +164,10 @@ class FrameSink {
  public:
   FrameSink(const PipelineOptions& options, std::size_t total) : options_(options), total_(total) {}
 
-  // False once a frame has failed or the run was interrupted: later frames cannot matter.
+  // False once later frames cannot matter: a frame failed (without keep_going), a file could not be
+  // written, or the run was interrupted.
   bool take(FrameJob& job) {
-    if (error_ || interrupted_) return false;
+    if (stopped_ || interrupted_) return false;
     if (job.error) {
       try {
         std::rethrow_exception(job.error);
@@ -173,15 +175,18 @@ class FrameSink {
         interrupted_ = true;
         return false;
       } catch (...) {
-        error_ = job.error;
-        return false;
       }
+      return failed(job, job.error);
     }
     try {
       add(job);
-    } catch (...) {
-      error_ = std::current_exception();
+    } catch (const OutputError&) {
+      // The disk is full or the folder went away: every later frame would fail the same way.
+      failed(job, std::current_exception());
+      stopped_ = true;
       return false;
+    } catch (...) {
+      return failed(job, std::current_exception());
     }
     return true;
   }
@@ -189,18 +194,70 @@ class FrameSink {
   void interrupt() { interrupted_ = true; }
 
   PipelineResult finish() {
-    if (error_) {
-      files_.clear();  // removes every staged file
-      std::rethrow_exception(error_);
-    }
+    if (!failures_.empty()) keep_whole_files_and_throw();
     if (interrupted_) keep_complete_files();
-    for (const auto& f : files_)
-      if (!f->finished()) f->finish();
+    for (std::size_t i = 0; i < files_.size(); ++i) {
+      try {
+        if (!files_[i]->finished()) files_[i]->finish();
+      } catch (const OutputError&) {  // the last bytes of a PDF did not fit on the disk
+        broken_.insert(i);
+        failures_.push_back({first_frames_[i], std::current_exception()});
+        failed_targets_.insert(result_.files[i]);
+      }
+    }
+    if (!failures_.empty()) keep_whole_files_and_throw();
     for (const auto& f : files_) f->commit();
     return std::move(result_);
   }
 
  private:
+  // Records a failed frame and the file it would have gone to, when that is known. True: go on.
+  bool failed(const FrameJob& job, std::exception_ptr error) {
+    failures_.push_back({job.frame, error});
+    if (!job.target.path.empty())
+      failed_targets_.insert(job.target.path);
+    else if (const std::optional<std::string>& pattern = options_.run.output)
+      failed_targets_.insert(has_frame_field(*pattern) ? substitute_frame(*pattern, job.frame) : *pattern);
+    else
+      unknown_target_ = true;
+    if (!options_.keep_going) stopped_ = true;  // frames after it, already in flight, are dropped
+    return !stopped_;
+  }
+
+  // After failures: a file is kept when it is whole — a one-frame file that was written, or a file of
+  // several frames that no failed frame (nor an interruption) could have gone to.
+  [[noreturn]] void keep_whole_files_and_throw() {
+    std::vector<fs::path> kept;
+    std::vector<bool> keep(files_.size(), false);
+    // A failed frame whose file is unknown (the script's output name is evaluated with the frame) went
+    // to a file of its own when every frame so far did: the names vary per frame.
+    const bool per_frame_names = result_.files.size() >= 2 && result_.files.size() == done_.size();
+    for (std::size_t i = 0; i < files_.size(); ++i) {
+      StagedFile& file = *files_[i];
+      if (broken_.count(i)) continue;
+      const bool last = i + 1 == files_.size();
+      keep[i] = file.finished() || ((!unknown_target_ || per_frame_names) &&
+                                    !failed_targets_.count(result_.files[i]) && !(interrupted_ && last));
+      if (!keep[i]) continue;
+      try {
+        if (!file.finished()) file.finish();
+        file.commit();
+        kept.push_back(result_.files[i]);
+      } catch (...) {
+        keep[i] = false;
+      }
+    }
+    files_.clear();  // removes every file not committed
+    std::vector<int> done;
+    for (std::size_t k = 0; k < done_.size(); ++k)
+      if (!options_.write || !options_.render || keep[done_file_[k]]) done.push_back(done_[k]);
+    std::sort(
+        failures_.begin(), failures_.end(),
+        [](const FramesFailed::Failure& a, const FramesFailed::Failure& b) { return a.frame < b.frame; });
+    if (failures_.size() == 1 && kept.empty()) std::rethrow_exception(failures_.front().error);
+    throw FramesFailed(std::move(failures_), std::move(done), std::move(kept));
+  }
+
   // Frames are taken in order and a file's frames are consecutive, so every file but the one the last
   // frame went to is whole; that one too when its device holds one frame.
   [[noreturn]] void keep_complete_files() {
@@ -225,29 +282,42 @@ class FrameSink {
   }
 
   void add(FrameJob& job) {
+    const int frame = job.record.time.frame;
+    const bool writing = options_.write && options_.render;
+    const auto found = by_path_.find(job.target.path);
+    std::size_t index = 0;
+    if (found == by_path_.end()) {
+      // Opened before it is registered: a file that cannot be created leaves no trace in the result.
+      std::unique_ptr<StagedFile> staged =
+          writing ? std::make_unique<StagedFile>(job.target, *job.device) : nullptr;
+      index = result_.files.size();
+      by_path_.emplace(job.target.path, index);
+      result_.files.push_back(job.target.path);
+      first_frames_.push_back(frame);
+      if (staged) files_.push_back(std::move(staged));
+    } else {
+      index = found->second;
+      if (one_frame_per_file(job.target.device))
+        fail_several_frames(job.target, first_frames_[index], frame, options_.run.output.has_value());
+    }
+    if (writing) {
+      StagedFile& file = *files_[index];
+      try {
+        file.append(std::move(job.encoded));
+        // A one-frame file is complete now: closed at once, so a 10 000-frame sequence holds no open
+        // files, only the names to rename at the end.
+        if (one_frame_per_file(job.target.device)) file.finish();
+      } catch (...) {
+        broken_.insert(index);
+        throw;
+      }
+    }
     for (lang::Diagnostic& w : job.warnings)
       if (seen_.emplace(w.span.file, w.span.begin.offset, w.span.end.offset, w.message).second)
         result_.warnings.push_back(std::move(w));
-    const int frame = job.record.time.frame;
-    const auto [it, added] = by_path_.emplace(job.target.path, files_.size());
-    if (added) {
-      result_.files.push_back(job.target.path);
-      first_frames_.push_back(frame);
-      if (options_.write && options_.render)
-        files_.push_back(std::make_unique<StagedFile>(job.target, *job.device));
-    } else if (one_frame_per_file(job.target.device)) {
-      fail_several_frames(job.target, first_frames_[it->second], frame, options_.run.output.has_value());
-    }
-    if (options_.write && options_.render) {
-      StagedFile& file = *files_[it->second];
-      file.append(std::move(job.encoded));
-      // A one-frame file is complete now: closed at once, so a 10 000-frame sequence holds no open files,
-      // only the names to rename at the end.
-      if (one_frame_per_file(job.target.device)) file.finish();
-    }
     ++result_.frame_count;
     done_.push_back(frame);
-    done_file_.push_back(it->second);
+    done_file_.push_back(index);
     if (options_.on_frame) options_.on_frame(result_.frame_count, total_);
     result_.faces += job.record.faces;
     result_.segments += job.record.segments;
@@ -260,7 +330,11 @@ class FrameSink {
   std::vector<std::unique_ptr<StagedFile>> files_;
   std::vector<int> first_frames_;
   std::set<std::tuple<lang::FileId, std::uint32_t, std::uint32_t, std::string>> seen_;
-  std::exception_ptr error_;
+  std::vector<FramesFailed::Failure> failures_;
+  std::set<fs::path> failed_targets_;     // files a failed frame went to, where known
+  bool unknown_target_ = false;           // a failed frame whose file is not known
+  std::set<std::size_t> broken_;          // files an append or finish failed on
+  bool stopped_ = false;                  // a file could not be written: no point in going on
   std::atomic<bool> interrupted_{false};  // also set by the input stage, on another thread
   std::vector<int> done_;                 // frames taken, in order
   std::vector<std::size_t> done_file_;    // the file each went to (an index into result_.files)
@@ -288,6 +362,7 @@ PipelineResult run_pipeline(const Program& program, const std::vector<int>& fram
     }
     auto* job = new FrameJob;
     job->index = next++;
+    job->frame = frames[job->index];
     return job;
   };
   auto work = [&](FrameJob* job) -> FrameJob* {
@@ -316,6 +391,7 @@ PipelineResult run_pipeline(const Program& program, const std::vector<int>& fram
       }
       job = new FrameJob;
       job->index = next++;
+      job->frame = frames[job->index];
       output(work(job));
     }
     return sink.finish();
@@ -325,7 +401,9 @@ PipelineResult run_pipeline(const Program& program, const std::vector<int>& fram
   const tbb::global_control stack(tbb::global_control::thread_stack_size, std::size_t{8} << 20);
   auto run_all = [&] {
     if (frames.size() == 1) {  // the frame's own work (objects, edges) is what runs in parallel
-      output(work(new FrameJob));
+      auto* job = new FrameJob;
+      job->frame = frames[0];
+      output(work(job));
       return;
     }
     tbb::parallel_pipeline(tokens,

@@ -3,14 +3,20 @@
 // settings, hidden lines, page layout and pen plan, device encoding — runs beside the others'; only
 // appending to the files happens one frame after another, in frame order. A bounded number of frames is
 // in flight, so memory stays flat however long the sequence. Output bytes do not depend on --jobs.
-// Files are written beside their targets and renamed into place only when every frame succeeded; on
-// any failure nothing is written and the failure of the lowest failing frame is reported.
+// Files are written beside their targets and renamed into place when complete. When a frame fails, the
+// run stops (or, with keep_going, renders the rest) and keeps every file that is whole: each file all of
+// whose frames succeeded and that no failed frame could have gone to. A file holding several frames (PDF
+// pages, JSON) is kept only when the failed frames' files are known and differ from it (-o names them,
+// or the failure came after the frame's file was resolved), or when every frame so far went to a file of
+// its own (a script's output name with the frame in it): a multi-page file is whole or absent.
 #pragma once
 
 #include <cstddef>
+#include <exception>
 #include <filesystem>
 #include <functional>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -44,6 +50,25 @@ struct RunInterrupted : std::runtime_error {
   bool removed_partial;  // a file still being written was removed
 };
 
+// Some frames failed (a script error in frame k, a file that could not be written) while others went
+// through. Thrown when anything was kept or more than one frame failed; a single failure that kept
+// nothing is rethrown as itself. `failures` holds each failed frame's own exception (EvalError with "(in
+// frame k)", RunError, OutputError), in frame order.
+struct FramesFailed : std::runtime_error {
+  struct Failure {
+    int frame;
+    std::exception_ptr error;
+  };
+  FramesFailed(std::vector<Failure> failed, std::vector<int> done, std::vector<std::filesystem::path> written)
+      : std::runtime_error("frames failed"),
+        failures(std::move(failed)),
+        frames_done(std::move(done)),
+        files(std::move(written)) {}
+  std::vector<Failure> failures;
+  std::vector<int> frames_done;              // the frames in the kept files (or rendered, without files)
+  std::vector<std::filesystem::path> files;  // kept, each whole
+};
+
 struct PipelineOptions {
   RunSettings run;
   unsigned jobs = 0;           // threads for everything (frames and the work inside them); 0: one per core
@@ -51,6 +76,7 @@ struct PipelineOptions {
   bool write = true;           // false: render and plan, but write no file (tests, the REPL)
   bool keep_segments = false;  // FrameRecord::segments holds the frame's pieces
   bool keep_records = true;    // PipelineResult::frames has every frame's record (else totals only)
+  bool keep_going = false;     // --keep-going: a failed frame does not stop the others (FramesFailed)
   // Called in frame order as each frame is written (done of total): the command's progress line.
   std::function<void(std::size_t done, std::size_t total)> on_frame;
 };
@@ -80,7 +106,8 @@ struct PipelineResult {
 
 // Runs `frames` of `program`. `first` is frame 0's scene when the caller has evaluated it already; `fps`
 // comes from its animate statement. Throws EvalError or RunError of the lowest failing frame (for an
-// animation the message names the frame), OutputError for a device's failure, RunInterrupted when
+// animation the message names the frame), OutputError for a device's failure — or FramesFailed with every
+// failure when some files were kept or several frames failed (see above) — RunInterrupted when
 // interrupt_requested() stopped it: then each file that holds only frames done is kept whole (a file per
 // frame, and any file a later frame did not go to), the file still being written is removed.
 PipelineResult run_pipeline(const Program& program, const std::vector<int>& frames, double fps,

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cerrno>
+#include <cstring>
 #include <fstream>
 #include <stdexcept>
 #include <string>
@@ -52,8 +54,10 @@ namespace {
 // A file that gets its frames' bytes as they come.
 class ByteFile : public DeviceFile {
  public:
-  explicit ByteFile(const fs::path& path) : path_(path), out_(path, std::ios::binary | std::ios::trunc) {
-    if (!out_) throw DeviceError("cannot create '" + path.string() + "'");
+  explicit ByteFile(const fs::path& path) {
+    errno = 0;
+    out_.open(path, std::ios::binary | std::ios::trunc);
+    if (!out_) fail("cannot create a file in '" + path.parent_path().string() + "'");
   }
   void append(EncodedFrame frame) override {
     if (!frame.file_head.empty() && first_) write(frame.file_head);
@@ -61,19 +65,26 @@ class ByteFile : public DeviceFile {
     first_ = false;
   }
   void finish() override {
+    errno = 0;
     out_.close();
-    if (!out_) throw DeviceError("write to '" + path_.string() + "' failed");
+    if (!out_) fail("the write failed");
   }
 
  protected:
   void write(const std::string& bytes) {
+    errno = 0;
     out_.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-    if (!out_) throw DeviceError("write to '" + path_.string() + "' failed");
+    if (!out_) fail("the write failed");
+  }
+  // The system's reason (no space left on the device, permission denied, file too large) is what the
+  // user can act on; the temporary file's name is not.
+  [[noreturn]] static void fail(const std::string& what) {
+    const int e = errno;
+    throw DeviceError(e ? what + ": " + std::strerror(e) : what);
   }
   bool first_ = true;
 
  private:
-  fs::path path_;
   std::ofstream out_;
 };
 

@@ -115,8 +115,9 @@ TEST_F(FramePipeline, PdfPagesComeInFrameOrder) {
   }
 }
 
-TEST_F(FramePipeline, AFailingFrameLeavesNothingBehind) {
-  // Frame 9 divides by zero; the frames before it were rendered, planned and encoded beside it.
+TEST_F(FramePipeline, AFailingFrameKeepsTheWholeFilesBeforeItAndNothingPartial) {
+  // Frame 9 divides by zero; the frames before it were rendered, planned and encoded beside it. A file
+  // per frame keeps frames 0-8, each whole; a file of every frame (PDF pages, JSON) is not written at all.
   std::ofstream(script_) << kTurntable << "let boom = 1 / (frame - 9)\n";
   for (const std::string pattern : {"all.pdf", "f-{frame:02}.png", "all.json"}) {
     for (const char* jobs : {"1", "2", "4"}) {
@@ -125,8 +126,25 @@ TEST_F(FramePipeline, AFailingFrameLeavesNothingBehind) {
       const test::CliResult r = test::run({script_.string(), "-o", (sub / pattern).string(), "--jobs", jobs});
       EXPECT_EQ(r.code, 65) << r.err;
       EXPECT_NE(r.err.find("division by zero (in frame 9)"), std::string::npos) << r.err;
-      EXPECT_TRUE(fs::is_empty(sub)) << pattern << " --jobs " << jobs << ": " << files_in(sub).size()
-                                     << " files left";
+      if (pattern[0] == 'a') {
+        EXPECT_TRUE(fs::is_empty(sub)) << pattern << " --jobs " << jobs << ": " << files_in(sub).size()
+                                       << " files left";
+        continue;
+      }
+      EXPECT_NE(r.err.find("frame 9 of 12 failed; kept 9 complete files (frames 0-8), none partial"),
+                std::string::npos)
+          << r.err;
+      const std::map<std::string, std::string> files = files_in(sub);
+      std::vector<std::string> names;
+      for (const auto& [name, bytes] : files) {
+        names.push_back(name);
+        ASSERT_GE(bytes.size(), 12U) << name;  // whole: the signature first, the IEND chunk last
+        EXPECT_EQ(bytes.substr(1, 3), "PNG") << name;
+        EXPECT_EQ(bytes.substr(bytes.size() - 8, 4), "IEND") << name;
+      }
+      std::vector<std::string> expected;
+      for (int f = 0; f < 9; ++f) expected.push_back("f-0" + std::to_string(f) + ".png");
+      EXPECT_EQ(names, expected) << " --jobs " << jobs;
     }
   }
 }
@@ -207,7 +225,12 @@ TEST_F(FramePipeline, ADeviceRefusingTheScriptsPageIsReportedAtItsOutputStatemen
     EXPECT_NE(r.err.find("paper.hls:4:8: error: HPGL: plotter 'hp7475a' takes no 1189 × 841 mm page"),
               std::string::npos)
         << r.err;
-    for (int f = 0; f < 6; ++f) EXPECT_FALSE(fs::exists(dir_ / ("p-" + std::to_string(f) + ".hpgl"))) << f;
+    // The frames before it are plotter files as complete as any; frame 3 and those after it are absent.
+    for (int f = 0; f < 6; ++f) EXPECT_EQ(fs::exists(dir_ / ("p-" + std::to_string(f) + ".hpgl")), f < 3) << f;
+    EXPECT_NE(r.err.find("frame 3 of 6 failed; kept 3 complete files (frames 0-2), none partial"),
+              std::string::npos)
+        << r.err;
+    for (int f = 0; f < 3; ++f) fs::remove(dir_ / ("p-" + std::to_string(f) + ".hpgl"));
   }
 }
 
