@@ -29,8 +29,9 @@ Value range_(CallArgs& call) {
   const double start = b.number(0), stop = b.number(1), step = b.number(2);
   if (step == 0) b.fail(2, "must not be 0");
   const double count = std::ceil((stop - start) / step);
-  if (!(count <= static_cast<double>(kMaxListItems)))
-    call.fail_call(limit_message("items in a list", kMaxListItems) + ": " + call.site().function +
+  const std::size_t limit = call.budget().limits().list;
+  if (!(count <= static_cast<double>(limit)))
+    call.fail_call(limit_message("items in a list", limit, "list") + ": " + call.site().function +
                    "() would make " + format_for_message(count));
   return Value::range({start, step, count > 0 ? static_cast<std::size_t>(count) : 0});
 }
@@ -40,7 +41,7 @@ const ParamList kStrParams = {required("x", kAnyKind)};
 Value str_(CallArgs& call) {
   const Bound b = call.bind(kStrParams);
   try {
-    std::string text = display(b.value(0), kMaxStringLength);
+    std::string text = display(b.value(0), call.budget().limits().string);
     call.budget().step(call.site().span, text.size() / 16);
     return Value::string(std::move(text));
   } catch (const FormatError& e) {

@@ -92,10 +92,12 @@ Value import_(CallArgs& call) {
     if (const auto it = cache.find(key); it != cache.end()) mesh = it->second;
   }
   if (!mesh.solid) {
+    call.budget().check_memory_ahead(b.span(0), static_cast<double>(size) * kEstimatedBytesPerMeshByte,
+                                     "mesh read");
     try {
       stdlib::MeshImportOptions options;
       options.crease_angle_deg = crease;
-      options.max_faces = kMaxFaces;
+      options.max_faces = call.budget().limits().faces;
       stdlib::ImportedMesh imported = stdlib::import_mesh(path, options);
       mesh.solid = std::make_shared<const Solid>(std::move(imported.solid));
       mesh.warnings = std::move(imported.warnings);
@@ -105,7 +107,11 @@ Value import_(CallArgs& call) {
       // script's (exit 65), like any other bad data it names.
       const bool unreadable =
           p.line == 0 && (p.message.rfind("cannot open", 0) == 0 || p.message.rfind("cannot read", 0) == 0);
-      fail_import(b.span(0), "cannot import '" + written + "': " + problem_text(p, path, written), p.hint,
+      // The importers' face limit is the run's (--limit faces=N): say which option raises it.
+      const std::string hint = p.hint.rfind("raise the face limit", 0) == 0
+                                   ? "--limit faces=N raises the face limit" + p.hint.substr(20)
+                                   : p.hint;
+      fail_import(b.span(0), "cannot import '" + written + "': " + problem_text(p, path, written), hint,
                   unreadable ? ErrorKind::Input : ErrorKind::Script);
     }
     const std::lock_guard<std::mutex> lock(cache_mutex);

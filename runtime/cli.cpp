@@ -284,6 +284,7 @@ int run_demo(CliOptions o, std::ostream& out, std::ostream& err) {
   const auto start = Clock::now();
   const auto program =
       Program::from_text("hlrscript-demo.hls", demo_script(o.demo_frames), "hlrscript-demo.hls", o.access);
+  program->set_limits(o.limits);
   if (!program->parsed()) {  // never: the text is ours
     print_diagnostics(err, program->syntax_errors(), program->sources());
     return kExitInternal;
@@ -321,6 +322,7 @@ int run_script(const CliOptions& o, std::ostream& out, std::ostream& err,
   std::unique_ptr<Program> program;
   try {
     program = Program::load(o.script, o.script, o.access);
+    program->set_limits(o.limits);
   } catch (const EvalError& e) {
     err << "hlrscript: error: " << e.what() << "\n";
     return kExitInput;

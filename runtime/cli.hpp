@@ -39,6 +39,7 @@ struct CliOptions {
   bool keep_going = false;      // --keep-going: render the other frames when one fails
   bool verbose = false;         // --verbose: also the notes on what the script asked to accept
   AccessOptions access;         // --allow-path, --out-dir
+  Limits limits;                // --limit NAME=N, --frame-timeout
   DeviceOptions device;         // --paper, --margin, --scale, --dpi, --plotter, --pen-order, ...
   int demo_frames = 12;         // --demo --frames N
   bool repl_requested = false;  // `hlrscript repl` / --repl: a REPL even when stdin is not a terminal

@@ -1,10 +1,14 @@
 // The command line, parsed with Boost.Program_options into CliOptions; every mistake is a usage error
 // (exit 64) that says what was expected.
+#include <algorithm>
 #include <boost/program_options.hpp>
 #include <charconv>
+#include <cstdint>
 #include <cstdio>
 #include <filesystem>
+#include <iterator>
 #include <ostream>
+#include <set>
 #include <sstream>
 
 #include "core/device/page_layout.hpp"
@@ -36,7 +40,16 @@ po::options_description visible_options() {
       ("jobs,j", po::value<std::string>()->value_name("N"),
        "use N threads for frames and the hidden lines inside them (default 0: one per core)")  //
       ("hidden", po::value<std::string>()->value_name("off|dashed"),
-       "hidden lines: off, or dashed (overrides the script)")                                     //
+       "hidden lines: off, or dashed (overrides the script)")  //
+      ("limit", po::value<std::vector<std::string>>()->value_name("NAME=N")->composing(),
+       "raise (or lower) a limit of each frame, repeatable: steps (evaluation steps, 10000000), faces "
+       "(built and drawn, 10000000), vertices (drawn, 30000000), segments (visible pieces, 20000000), memory "
+       "(MB estimated for the solids made, 16384), calls (nesting, 256), list (items, 10000000), string "
+       "(bytes, 10000000)")  //
+      (
+          "frame-timeout", po::value<std::string>()->value_name("SECONDS"),
+          "stop a frame that takes longer (evaluation, hidden lines and pen plan) with an error; default "
+          "none")                                                                                 //
       ("keep-going", "when a frame fails, render the other frames anyway (the run still fails)")  //
       ("stats", "print per-frame statistics (hidden-line and pen plan) to stderr")                //
       ("paper", po::value<std::string>()->value_name("SIZE"),
@@ -171,6 +184,49 @@ bool parse_device_options(const po::variables_map& vm, DeviceOptions& d, std::st
       return false;
     }
   }
+  return true;
+}
+
+// --limit NAME=N (each name once; N a whole number from 1) and --frame-timeout SECONDS.
+bool parse_limits(const po::variables_map& vm, Limits& limits, std::string& error) {
+  std::set<std::string> seen;
+  if (vm.count("limit"))
+    for (const std::string& text : vm["limit"].as<std::vector<std::string>>()) {
+      const std::size_t eq = text.find('=');
+      const std::string name = text.substr(0, eq);
+      std::string names;
+      for (const char* n : kLimitNames) names += (names.empty() ? "" : ", ") + std::string(n);
+      if (eq == std::string::npos ||
+          std::find(std::begin(kLimitNames), std::end(kLimitNames), name) == std::end(kLimitNames)) {
+        error = "--limit " + text + ": expected NAME=N with NAME one of " + names;
+        return false;
+      }
+      if (!seen.insert(name).second) {
+        error = "--limit " + name + " is given twice";
+        return false;
+      }
+      const std::string value = text.substr(eq + 1);
+      std::uint64_t n = 0;
+      const auto r = std::from_chars(value.data(), value.data() + value.size(), n);
+      constexpr std::uint64_t kCeiling = std::uint64_t{1} << 40;
+      // Calls nest on the evaluator's own stack, sized for kMaxEvalDepth levels.
+      const std::uint64_t most = name == "calls" ? kMaxEvalDepth / 4 : kCeiling;
+      if (r.ec != std::errc() || r.ptr != value.data() + value.size() || n < 1 || n > most) {
+        error = "--limit " + text + ": expected a whole number from 1 to " + std::to_string(most);
+        return false;
+      }
+      if (name == "steps") limits.steps = n;
+      if (name == "faces") limits.faces = n;
+      if (name == "vertices") limits.vertices = n;
+      if (name == "segments") limits.segments = n;
+      if (name == "memory") limits.memory_mb = n;
+      if (name == "calls") limits.calls = n;
+      if (name == "list") limits.list = n;
+      if (name == "string") limits.string = n;
+    }
+  std::optional<double> timeout;
+  if (!number_option(vm, "frame-timeout", 0.001, 1e6, timeout, error)) return false;
+  if (timeout) limits.frame_timeout_s = *timeout;
   return true;
 }
 
@@ -316,6 +372,7 @@ std::optional<CliOptions> parse_cli(int argc, const char* const argv[], std::ost
   o.quiet = vm.count("quiet") > 0;
   if (!parse_device_options(vm, o.device, error)) return usage_error(err, error);
   if (!parse_access_options(vm, o.access, error)) return usage_error(err, error);
+  if (!parse_limits(vm, o.limits, error)) return usage_error(err, error);
   if (o.mode == CliOptions::Mode::Check && o.output) return usage_error(err, "check writes nothing; drop -o");
   return o;
 }

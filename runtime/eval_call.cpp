@@ -1,5 +1,5 @@
 // Calls: built-ins through their registration tables, user functions as closures with named and
-// default parameters. The call depth is limited (kMaxCallDepth); an error inside a function carries
+// default parameters. The call depth is limited (Limits::calls); an error inside a function carries
 // notes pointing at the calls that led there.
 #include "runtime/eval_detail.hpp"
 #include "runtime/evaluator.hpp"
@@ -81,8 +81,8 @@ const std::string& Evaluator::signature_of(const Function& function, const lang:
 Value Evaluator::call_user(const Function& function, const UserFunction& user, const std::vector<Arg>& args,
                            const lang::SourceSpan& call_span) {
   const lang::DefStmt& def = *user.def;
-  if (call_depth_ >= kMaxCallDepth)
-    fail(call_span, limit_message("nested calls", kMaxCallDepth),
+  if (call_depth_ >= budget_.limits().calls)
+    fail(call_span, limit_message("nested calls", budget_.limits().calls, "calls"),
          "does '" + function.name + "' recurse without reaching a case that returns directly?");
   const CallDepth depth(call_depth_);
   try {

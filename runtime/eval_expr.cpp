@@ -96,7 +96,7 @@ Value Evaluator::eval_comprehension(const lang::ListComprehension& comp, const l
              "compare explicitly, e.g. [i for i in l if i != 0]");
       if (!keep.as_bool()) continue;
     }
-    Budget::check_list_size(expr.span, out.size() + 1);
+    budget_.check_list_size(expr.span, out.size() + 1);
     out.push_back(eval(*comp.element, item_scope));
   }
   return Value::list(std::move(out));
@@ -121,13 +121,13 @@ Value Evaluator::eval_string(const lang::StringLit& lit, const ScopePtr& scope) 
     } else {
       const Value v = eval(*part.expr, scope);
       try {
-        const std::size_t room = kMaxStringLength - text.size();
+        const std::size_t room = budget_.limits().string - std::min(text.size(), budget_.limits().string);
         text += part.format.empty() ? display(v, room) : format_value(v, part.format, room);
       } catch (const FormatError& e) {
         fail(part.span, e.what());
       }
     }
-    if (text.size() > kMaxStringLength) fail(part.span, limit_message("bytes in a string", kMaxStringLength));
+    budget_.check_string_size(part.span, text.size());
   }
   budget_.step(lit.parts.empty() ? lang::SourceSpan{} : lit.parts.front().span, text.size() / 64);
   return Value::string(std::move(text));

@@ -22,7 +22,8 @@ bool is_identity(const Affine3& a) {
 
 }  // namespace
 
-Evaluator::Evaluator(SourceTable& sources, FrameScene& out) : sources_(sources), out_(out) {
+Evaluator::Evaluator(SourceTable& sources, FrameScene& out, const Limits& limits)
+    : sources_(sources), out_(out), budget_(limits) {
   auto frame_globals = std::make_shared<Scope>();
   frame_globals->define("frame", Value::number(out.time.frame), {});
   frame_globals->define("t", Value::number(out.time.t), {});
@@ -159,7 +160,7 @@ void Evaluator::exec_draw(const lang::DrawStmt& draw, const ScopePtr& scope) {
   const int pen = draw.pen ? eval_pen_number(*draw.pen->number, scope) : 1;
   const lang::SourceSpan& span = draw.transform ? draw.transform->span : draw.object->span;
   for (PlacedSolid& placed : flatten_placed(object, at, draw.object->span, "draw", budget_)) {
-    budget_.charge_faces_drawn(draw.object->span, placed.solid->faces.size());
+    budget_.charge_faces_drawn(draw.object->span, placed.solid->faces.size(), placed.solid->vertices.size());
     SceneObject o;
     const int seen = ++drawn_names_[placed.name];
     o.name = seen == 1 ? placed.name : placed.name + "#" + std::to_string(seen);

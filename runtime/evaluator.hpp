@@ -38,7 +38,7 @@ IncludeTarget include_target(const SourceTable& sources, const lang::IncludeStmt
 
 class Evaluator {
  public:
-  Evaluator(SourceTable& sources, FrameScene& out);
+  Evaluator(SourceTable& sources, FrameScene& out, const Limits& limits = {});
   ~Evaluator();  // clears the scopes closures point into, breaking their reference cycles
   Evaluator(const Evaluator&) = delete;
   Evaluator& operator=(const Evaluator&) = delete;

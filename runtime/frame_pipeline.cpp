@@ -18,6 +18,7 @@
 #include "core/hlr/render_frame.hpp"
 #include "runtime/eval_error.hpp"
 #include "runtime/interrupt.hpp"
+#include "runtime/limits.hpp"
 
 namespace hlr::runtime {
 
@@ -68,9 +69,26 @@ void run_frame(const Program& program, int frame, double fps, const PipelineOpti
   hlr.include_hidden = settings.hidden;
   hlr.threads = engine_threads;
   hlr.cancel = &interrupt_requested();
+  hlr.deadline = scene.deadline;
+  const Limits& limits = program.limits();
+  const auto out_of_time = [&](const char* stage) {
+    fail(settings.camera->span, frame_timeout_message(limits.frame_timeout_s) + " in " + stage,
+         "--frame-timeout SECONDS gives each frame more time; a simpler view or scene needs less");
+  };
   const auto start = Clock::now();
-  FrameResult result = render_frame(scene.scene, settings.camera->camera, hlr);
+  FrameResult result;
+  try {
+    result = render_frame(scene.scene, settings.camera->camera, hlr);
+  } catch (const FrameTimedOut&) {
+    out_of_time("the hidden lines");
+  }
   r.render_seconds = seconds_since(start);
+  // Each piece costs the plan and the device more than the engine: a runaway count stops here.
+  if (result.segments.size() > limits.segments)
+    fail(settings.camera->span,
+         limit_message("visible pieces in one frame", limits.segments, "segments") + ": this view has " +
+             std::to_string(result.segments.size()),
+         "draw fewer or coarser solids, or look from farther away");
   r.segments = result.segments.size();
   r.stats = result.stats;
   try {
@@ -88,6 +106,7 @@ void run_frame(const Program& program, int frame, double fps, const PipelineOpti
   frame_out.object_names = &r.object_names;
   frame_out.include_hidden = settings.hidden;
   frame_out.plot = plot_page(result.segments, settings.camera->camera.frame, settings.caption, settings.plot);
+  if (Clock::now() > scene.deadline) out_of_time("the pen plan");
   r.plan = frame_out.plot.stats;
   r.visible_segments = frame_out.plot.visible_segments;
   if (options.write) {

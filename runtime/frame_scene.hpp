@@ -2,6 +2,7 @@
 // the settings statements (animate, output, paper, style). Plain data; no language types besides spans.
 #pragma once
 
+#include <chrono>
 #include <cstddef>
 #include <cstdint>
 #include <optional>
@@ -77,6 +78,8 @@ struct FrameScene {
   std::uint64_t steps = 0;
   std::size_t faces_built = 0;
   double evaluate_seconds = 0;
+  // When the frame's --frame-timeout runs out, counted from the start of its evaluation.
+  std::chrono::steady_clock::time_point deadline = std::chrono::steady_clock::time_point::max();
 };
 
 }  // namespace hlr::runtime

@@ -5,6 +5,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <cstdio>
 #include <string>
 
 namespace hlr::runtime {
@@ -23,9 +24,46 @@ inline constexpr std::size_t kMaxIncludeDepth = 32;          // include inside i
 inline constexpr std::uint64_t kInterruptCheckSteps = 4096;  // evaluation steps between Ctrl-C checks
 inline constexpr std::size_t kMaxEvalDepth = 100'000;
 
+inline constexpr std::size_t kMaxVerticesDrawn = 30'000'000;  // vertices of the solids drawn in one frame
+inline constexpr std::size_t kMaxSegments = 20'000'000;       // pieces the hidden-line engine returns
+inline constexpr std::size_t kMaxGeometryMb = 16'384;  // estimated memory of the solids one frame makes
+// What one face costs from the moment it is made to the frame's file, for the estimate checked before a
+// solid is built or a mesh read (measured end to end at about 1 KiB per face on big scenes, bench/README.md).
+inline constexpr std::size_t kEstimatedBytesPerFace = 1024;
+inline constexpr std::size_t kEstimatedBytesPerMeshByte = 40;  // a mesh file's text, read into a solid
+
+// The limits of one run, each raised (or lowered) by `--limit NAME=N`; the defaults are the constants
+// above, generous for every example and bench scene. A script cannot change them.
+struct Limits {
+  std::uint64_t steps = kMaxSteps;
+  std::size_t faces = kMaxFaces;
+  std::size_t vertices = kMaxVerticesDrawn;
+  std::size_t segments = kMaxSegments;
+  std::size_t memory_mb = kMaxGeometryMb;
+  std::size_t calls = kMaxCallDepth;
+  std::size_t list = kMaxListItems;
+  std::size_t string = kMaxStringLength;
+  double frame_timeout_s = 0;  // --frame-timeout: 0 = none
+};
+
+// The names --limit takes, in the order --help lists them.
+inline constexpr const char* kLimitNames[] = {"steps",  "faces", "vertices", "segments",
+                                              "memory", "calls", "list",     "string"};
+
 // "too many nested calls (the limit is 256)"
 inline std::string limit_message(const std::string& what, std::uint64_t limit) {
   return "too many " + what + " (the limit is " + std::to_string(limit) + ")";
+}
+// "the frame took longer than --frame-timeout 2.5 s"
+inline std::string frame_timeout_message(double seconds) {
+  char text[64];
+  std::snprintf(text, sizeof text, "the frame took longer than --frame-timeout %g s", seconds);
+  return text;
+}
+// "too many faces built in one frame (the limit is 10000000; --limit faces=N raises it)"
+inline std::string limit_message(const std::string& what, std::uint64_t limit, const char* option) {
+  return "too many " + what + " (the limit is " + std::to_string(limit) + "; --limit " + option +
+         "=N raises it)";
 }
 
 }  // namespace hlr::runtime

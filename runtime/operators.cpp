@@ -83,7 +83,7 @@ Value arithmetic(const lang::BinaryExpr& bin, double a, double b) {
 
 Value concatenate(const lang::BinaryExpr& bin, const Value& a, const Value& b, Budget& budget) {
   const std::size_t n = sequence_size(a) + sequence_size(b);
-  Budget::check_list_size(bin.op_span, n);
+  budget.check_list_size(bin.op_span, n);
   budget.step(bin.op_span, n / 8);  // copying is work: a loop of big concatenations must hit the step limit
   List items;
   items.reserve(n);
@@ -92,10 +92,11 @@ Value concatenate(const lang::BinaryExpr& bin, const Value& a, const Value& b, B
   return Value::list(std::move(items));
 }
 
-Value make_range(const lang::BinaryExpr& bin, double a, double b) {
+Value make_range(const lang::BinaryExpr& bin, double a, double b, const Budget& budget) {
   const double count = std::ceil(b - a);
-  if (count > static_cast<double>(kMaxListItems))
-    fail(bin.op_span, limit_message("items in a list", kMaxListItems) + ": " + format_for_message(a) + ".." +
+  const std::size_t limit = budget.limits().list;
+  if (count > static_cast<double>(limit))
+    fail(bin.op_span, limit_message("items in a list", limit, "list") + ": " + format_for_message(a) + ".." +
                           format_for_message(b) + " has " + format_for_message(count));
   return Value::range({a, 1, count > 0 ? static_cast<std::size_t>(count) : 0});
 }
@@ -130,7 +131,7 @@ Value binary_op(const lang::BinaryExpr& bin, const Value& a, const Value& b, Bud
       return arithmetic(bin, a.as_number(), b.as_number());
     case BinaryOp::Range:
       if (!num) type_error(bin, a, b);
-      return make_range(bin, a.as_number(), b.as_number());
+      return make_range(bin, a.as_number(), b.as_number(), budget);
     case BinaryOp::Add:
     case BinaryOp::Sub:
       if (num) return arithmetic(bin, a.as_number(), b.as_number());
@@ -140,8 +141,7 @@ Value binary_op(const lang::BinaryExpr& bin, const Value& a, const Value& b, Bud
       if (bin.op == BinaryOp::Add && a.is_sequence() && b.is_sequence())
         return concatenate(bin, a, b, budget);
       if (bin.op == BinaryOp::Add && ka == ValueKind::String && kb == ValueKind::String) {
-        if (a.as_string().size() + b.as_string().size() > kMaxStringLength)
-          fail(bin.op_span, limit_message("bytes in a string", kMaxStringLength));
+        budget.check_string_size(bin.op_span, a.as_string().size() + b.as_string().size());
         budget.step(bin.op_span, (a.as_string().size() + b.as_string().size()) / 64);
         return Value::string(a.as_string() + b.as_string());
       }

@@ -48,7 +48,8 @@ FrameScene Program::evaluate(const FrameTime& time,
   scene.time = time;
   const auto start = std::chrono::steady_clock::now();
   run_on_big_stack([&] {
-    Evaluator evaluator(*sources_, scene);
+    Evaluator evaluator(*sources_, scene, limits_);
+    scene.deadline = evaluator.budget().deadline();
     evaluator.run(*main_);
     if (inspect) inspect(evaluator);
   });

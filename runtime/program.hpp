@@ -11,6 +11,7 @@
 
 #include "runtime/file_access.hpp"
 #include "runtime/frame_scene.hpp"
+#include "runtime/limits.hpp"
 #include "runtime/source_table.hpp"
 
 namespace hlr::runtime {
@@ -48,6 +49,9 @@ class Program {
   FrameScene evaluate(const FrameTime& time, const std::function<void(const Evaluator&)>& inspect) const;
 
   const SourceTable& sources() const { return *sources_; }
+  // The run's limits (--limit, --frame-timeout), for every evaluation from here on.
+  void set_limits(const Limits& limits) { limits_ = limits; }
+  const Limits& limits() const { return limits_; }
   const SourceEntry& main() const { return *main_; }
 
  private:
@@ -57,6 +61,7 @@ class Program {
   const SourceEntry* main_;
   std::vector<lang::Diagnostic> static_errors_;
   bool uses_frames_ = false;
+  Limits limits_;
 };
 
 // `frame`, `t` = frame/(N − 1) (0 for one frame) and `time` = frame/fps.

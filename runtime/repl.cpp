@@ -25,6 +25,7 @@ int run_stdin_script(const CliOptions& o, std::istream& in, std::ostream& out, s
   text << in.rdbuf();
   const auto program =
       Program::from_text("<stdin>", text.str(), std::filesystem::current_path() / "stdin.hls", o.access);
+  program->set_limits(o.limits);
   if (!program->parsed()) {
     print_diagnostics(err, program->syntax_errors(), program->sources());
     return kExitScript;
@@ -40,7 +41,7 @@ int run_repl(const CliOptions& o, std::istream& in, bool terminal, std::ostream&
   if (!terminal && !o.repl_requested) return run_stdin_script(o, in, out, err);
 
   ReplSession session(terminal_size(STDOUT_FILENO));
-  session.set_access(o.access);
+  session.set_run_options(o.access, o.limits);
   // Asked once, before line editing owns the terminal: the answer does not change within a session.
   const TerminalGraphics graphics =
       terminal ? detect_terminal_graphics(STDIN_FILENO, STDOUT_FILENO) : TerminalGraphics::Braille;

@@ -121,9 +121,11 @@ std::string ReplSession::join(const std::vector<Chunk>& chunks) const {
 
 namespace {
 std::unique_ptr<Program> session_program(const std::string& text, const std::optional<fs::path>& loaded,
-                                         const AccessOptions& access) {
+                                         const AccessOptions& access, const Limits& limits) {
   const fs::path where = loaded ? fs::absolute(*loaded) : fs::current_path() / "session.hls";
-  return Program::from_text("<session>", text, where, access);
+  auto program = Program::from_text("<session>", text, where, access);
+  program->set_limits(limits);
+  return program;
 }
 }  // namespace
 
@@ -199,7 +201,7 @@ ReplReply ReplSession::accept(const std::string& text) {
   // One evaluation per arrangement tried: the values shown come from the one that works.
   std::string values;
   auto attempt = [&](const std::vector<Chunk>& chunks, std::unique_ptr<Program>& program) {
-    program = session_program(join(chunks), loaded_, access_);
+    program = session_program(join(chunks), loaded_, access_, limits_);
     values.clear();
     return evaluate_frame(*program, frame_, [&](const Evaluator& e) {
       for (const std::string& name : chunk.names)
@@ -243,7 +245,8 @@ ReplReply ReplSession::accept(const std::string& text) {
 }
 
 ReplReply ReplSession::evaluate_expression(const std::string& text) {
-  const auto program = session_program(join(chunks_) + "let " + kValueName + " = " + text, loaded_, access_);
+  const auto program =
+      session_program(join(chunks_) + "let " + kValueName + " = " + text, loaded_, access_, limits_);
   if (!program->parsed()) return error(diagnostics_text(program->syntax_errors(), *program));
   try {
     std::string shown;
@@ -259,7 +262,7 @@ ReplReply ReplSession::evaluate_expression(const std::string& text) {
 }
 
 std::optional<ReplSession::View> ReplSession::view(std::string& message) const {
-  const auto program = session_program(view_text(chunks_), loaded_, access_);
+  const auto program = session_program(view_text(chunks_), loaded_, access_, limits_);
   View v;
   try {
     v.scene = evaluate_frame(*program, frame_);
@@ -333,7 +336,7 @@ ReplReply ReplSession::stats() {
 }
 
 ReplReply ReplSession::scene() {
-  const auto program = session_program(join(chunks_), loaded_, access_);
+  const auto program = session_program(join(chunks_), loaded_, access_, limits_);
   try {
     const FrameScene s = evaluate_frame(*program, frame_);
     std::string out;
@@ -355,7 +358,7 @@ ReplReply ReplSession::scene() {
 }
 
 ReplReply ReplSession::frames() {
-  const auto program = session_program(join(chunks_), loaded_, access_);
+  const auto program = session_program(join(chunks_), loaded_, access_, limits_);
   try {
     const FrameScene first = evaluate_frame(*program, 0);
     if (!first.animation) return done("one frame (no animate statement); :frame 0 is the drawing\n");
@@ -406,7 +409,7 @@ ReplReply ReplSession::save(const std::string& file) {
 }
 
 ReplReply ReplSession::render(const std::string& file) {
-  const auto program = session_program(view_text(chunks_), loaded_, access_);
+  const auto program = session_program(view_text(chunks_), loaded_, access_, limits_);
   CliOptions o;
   o.mode = CliOptions::Mode::Repl;  // the REPL's Ctrl-C handler stays; a stop is reported as the REPL's
   o.script = "<session>";
@@ -428,7 +431,7 @@ ReplReply ReplSession::load(const fs::path& path) {
   if (!parsed.ok()) return error(diagnostics_text(parsed));
   Chunk chunk{text, {}, {}};
   names_of(*parsed.script, chunk.names, chunk.cameras);
-  const auto program = session_program(text, path, access_);
+  const auto program = session_program(text, path, access_, limits_);
   try {
     const FrameScene scene = evaluate_frame(*program, 0);
     undo_.push_back(chunks_);

@@ -17,6 +17,7 @@
 
 #include "core/camera/camera_adjust.hpp"
 #include "runtime/file_access.hpp"
+#include "runtime/limits.hpp"
 #include "runtime/terminal_graphics.hpp"
 #include "runtime/terminal_picture.hpp"
 
@@ -45,8 +46,11 @@ class ReplSession {
 
   void set_terminal_size(TerminalSize size) { size_ = size; }
   // The folders the session's scripts may read beyond their own, and where their outputs go (--allow-path,
-  // --out-dir).
-  void set_access(AccessOptions access) { access_ = std::move(access); }
+  // --out-dir); the limits of each evaluation (--limit, --frame-timeout).
+  void set_run_options(AccessOptions access, const Limits& limits) {
+    access_ = std::move(access);
+    limits_ = limits;
+  }
   // How :show draws: braille text, or the real picture of `pixels` for kitty and sixel terminals.
   void set_graphics(TerminalGraphics kind, PixelSize pixels) {
     graphics_ = kind;
@@ -96,6 +100,7 @@ class ReplSession {
   std::string stepped_name_;                     // the adjusted camera's name in view_text()
   std::optional<std::filesystem::path> loaded_;  // for :reload
   AccessOptions access_;
+  Limits limits_;
 };
 
 // The commands and what they do, one line each.

@@ -161,6 +161,9 @@ std::size_t clip_candidates(FrameSetup& setup, std::size_t from, const Camera& c
 FrameResult render_frame(const Scene& scene, const Camera& camera, const HlrOptions& options) {
   const auto check_cancel = [&] {
     if (options.cancel && options.cancel->load(std::memory_order_relaxed)) throw RenderCancelled();
+    if (options.deadline != std::chrono::steady_clock::time_point::max() &&
+        std::chrono::steady_clock::now() > options.deadline)
+      throw FrameTimedOut();
   };
   check_cancel();
   // Where a solid passes through itself is searched for once per solid (and kept with it). The edges'

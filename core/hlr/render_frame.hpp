@@ -6,6 +6,7 @@
 #pragma once
 
 #include <atomic>
+#include <chrono>
 #include <stdexcept>
 
 #include "core/camera/camera.hpp"
@@ -24,6 +25,14 @@ struct HlrOptions {
   // Checked between chunks of work (a fraction of a millisecond each): when it becomes true the
   // frame stops with RenderCancelled (the REPL's Ctrl-C).
   const std::atomic<bool>* cancel = nullptr;
+  // Checked at the same places: past it, the frame stops with FrameTimedOut (--frame-timeout).
+  std::chrono::steady_clock::time_point deadline = std::chrono::steady_clock::time_point::max();
+};
+
+// The work ran past HlrOptions::deadline; nothing of it is kept.
+class FrameTimedOut : public std::runtime_error {
+ public:
+  FrameTimedOut() : std::runtime_error("out of time") {}
 };
 
 // The work was stopped through a cancel flag; nothing of it is kept.

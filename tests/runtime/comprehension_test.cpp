@@ -94,7 +94,10 @@ TEST(Comprehension, ErrorsInTheElementPointAtIt) {
 TEST(Comprehension, EachItemCostsAStep) {
   // An empty body still costs one step per item: a huge filtered-out walk stops at the step limit.
   const std::string e = first_error("let x = [i for i in 0..9000000 if false]");
-  EXPECT_NE(e.find("too many evaluation steps in one frame (the limit is 10000000)"), std::string::npos) << e;
+  EXPECT_NE(
+      e.find("too many evaluation steps in one frame (the limit is 10000000; --limit steps=N raises it)"),
+      std::string::npos)
+      << e;
   EXPECT_EQ(first_error("let x = [0 for i in 0..3000000]"), "<no error>");
   const std::string big = first_error("let x = [0 for i in 0..6000000]");
   EXPECT_NE(big.find("too many evaluation steps"), std::string::npos) << big;

@@ -38,8 +38,9 @@ inline FrameScene run_ok(const std::string& text, FrameTime time = {}) {
 }
 
 // "line:col: message" of the first error, or "<no error>".
-inline std::string first_error(const std::string& text, FrameTime time = {}) {
+inline std::string first_error(const std::string& text, FrameTime time = {}, const Limits& limits = {}) {
   const auto program = Program::from_text("test.hls", text);
+  program->set_limits(limits);
   try {
     program->evaluate(time);
   } catch (const EvalError& e) {
