@@ -350,10 +350,10 @@ class FrameSink {
   std::vector<int> first_frames_;
   std::set<std::tuple<lang::FileId, std::uint32_t, std::uint32_t, std::string>> seen_;
   std::vector<FramesFailed::Failure> failures_;
-  std::set<fs::path> failed_targets_;     // files a failed frame went to, where known
-  bool unknown_target_ = false;           // a failed frame whose file is not known
-  std::set<std::size_t> broken_;          // files an append or finish failed on
-  bool stopped_ = false;                  // a file could not be written: no point in going on
+  std::set<fs::path> failed_targets_;  // files a failed frame went to, where known
+  bool unknown_target_ = false;        // a failed frame whose file is not known
+  std::set<std::size_t> broken_;       // files an append or finish failed on
+  bool stopped_ = false;               // a frame failed (without keep_going) or a file could not be written
   std::atomic<bool> interrupted_{false};  // also set by the input stage, on another thread
   std::vector<int> done_;                 // frames taken, in order
   std::vector<std::size_t> done_file_;    // the file each went to (an index into result_.files)
