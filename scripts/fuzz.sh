@@ -15,6 +15,9 @@ work=$build_dir/fuzz-runs
 # Inputs longer than the seeds are rarely useful; these leave room for a few mutations beyond them.
 declare -A max_len=([parser]=8192 [evaluator]=8192 [off]=4096 [obj]=4096 [stl_ascii]=4096
                     [stl_binary]=4096 [albers]=2048 [engine]=512)
+# Keywords spliced in whole by the mutations of the text formats.
+declare -A dict=([parser]=hls.dict [evaluator]=hls.dict [off]=mesh.dict [obj]=mesh.dict [stl_ascii]=mesh.dict
+                 [albers]=mesh.dict)
 
 bash scripts/setup.sh  # clang and libclang-rt-14-dev among the rest
 CC=clang CXX=clang++ cmake -S . -B "$build_dir" -G Ninja -DHLR_FUZZ=ON -DHLR_BUILD_TESTS=OFF \
@@ -27,8 +30,9 @@ export LSAN_OPTIONS=${LSAN_OPTIONS:-suppressions=$PWD/tests/sanitizers/lsan.supp
 # One target: its corpus copied into $work/<target>/corpus, findings into $work/<target>/artifacts/, the
 # log in $work/<target>/log, libFuzzer's exit status (0 when nothing was found) in $work/<target>/status.
 run_target() {
-  local target=$1 dir=$work/$1 status=0
-  "$build_dir/tests/fuzz/fuzz_$target" -max_total_time="$seconds" -max_len="${max_len[$target]}" -timeout=10 \
+  local target=$1 dir=$work/$1 status=0 flags=()
+  [ -n "${dict[$target]:-}" ] && flags+=(-dict="tests/fuzz/${dict[$target]}")
+  "$build_dir/tests/fuzz/fuzz_$target" "${flags[@]}" -max_total_time="$seconds" -max_len="${max_len[$target]}" -timeout=10 \
     -rss_limit_mb=2048 -print_final_stats=1 -artifact_prefix="$dir/artifacts/" "$dir/corpus" >"$dir/log" 2>&1 ||
     status=$?
   echo "$status" >"$dir/status"

@@ -8,13 +8,15 @@
 //           bits 4-5 frame aspect (none, 1, 1.5, 0.25), bits 6-7 pen order (none, greedy, optimized ×2)
 //   eye xyz, target xyz, up (0 z, 1 y, 2 x, 3 the diagonal), lens (fov 1 + b·0.7° or height 0.5 + b/4)
 //   solid count (1 + b % 3), then per solid:
-//     vertex count (3 + b % 14), options (bit 0 mirrored, bits 1-7 crease angle in degrees), vertices xyz,
+//     vertex count (3 + b % 14), options (bit 0 mirrored, bits 1-7 crease angle in degrees), turn (0 none,
+//     else about axis b % 4 as for up, by (b >> 2) · 360°/64: off-grid coordinates), vertices xyz,
 //     record count (b % 24), records: r = kind (r >> 6: 0-1 a face, 2 a face with one hole, 3 a line)
 //     and size (3 + r % 8 vertices), then the vertex numbers (b % vertex count); a hole's record is a size
 //     byte (3 + b % 8) and its vertex numbers; a line's is its two vertex numbers.
 // tests/fuzz/write_seeds.py writes the seeds in this layout.
 #include <cmath>
 #include <cstdlib>
+#include <numbers>
 #include <optional>
 #include <string>
 #include <vector>
@@ -37,6 +39,8 @@ hlr::Point3 point(ByteReader& in) {
   return {x, y, coordinate(in)};
 }
 
+constexpr hlr::Vector3 kAxes[] = {{0, 0, 1}, {0, 1, 0}, {1, 0, 0}, {1, 1, 1}};
+
 std::vector<hlr::VertexIndex> ring(ByteReader& in, std::size_t size, std::size_t vertices) {
   std::vector<hlr::VertexIndex> r(size);
   for (hlr::VertexIndex& v : r) v = static_cast<hlr::VertexIndex>(in.byte() % vertices);
@@ -47,6 +51,7 @@ std::vector<hlr::VertexIndex> ring(ByteReader& in, std::size_t size, std::size_t
 std::optional<hlr::Solid> decode_solid(ByteReader& in) {
   const std::size_t vertices = 3 + in.byte() % 14;
   const std::uint8_t options = in.byte();
+  const std::uint8_t turn = in.byte();
   hlr::SolidBuildOptions build;
   build.crease_angle_deg = options >> 1;
   hlr::SolidBuilder builder(build);
@@ -66,14 +71,17 @@ std::optional<hlr::Solid> decode_solid(ByteReader& in) {
   }
   hlr::SolidBuildResult built = builder.build();
   if (!built.ok()) return std::nullopt;
-  if (options & 1) return built.solid->transformed(hlr::Affine3::scaling(-1, 1, 1));
+  hlr::Affine3 placement = hlr::Affine3::identity();
+  if (options & 1) placement = hlr::Affine3::scaling(-1, 1, 1);
+  if (turn != 0)
+    placement = placement.then(hlr::Affine3::rotation(kAxes[turn % 4], (turn >> 2) * std::numbers::pi / 32));
+  if ((options & 1) || turn != 0) return built.solid->transformed(placement);
   return std::move(built.solid);
 }
 
 std::optional<hlr::Camera> decode_camera(ByteReader& in, std::uint8_t flags) {
   const hlr::Point3 eye = point(in), target = point(in);
-  static constexpr hlr::Vector3 kUps[] = {{0, 0, 1}, {0, 1, 0}, {1, 0, 0}, {1, 1, 1}};
-  const hlr::Vector3 up = kUps[in.byte() % 4];
+  const hlr::Vector3 up = kAxes[in.byte() % 4];
   const std::uint8_t lens = in.byte();
   static constexpr double kAspects[] = {0, 1, 1.5, 0.25};
   const double aspect = kAspects[(flags >> 4) & 3];

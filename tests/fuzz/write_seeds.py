@@ -14,8 +14,8 @@ def s8(value):
     return b & 0xFF
 
 
-def solid(vertices, faces, lines=(), options=0):
-    out = [(len(vertices) - 3) % 14, options]
+def solid(vertices, faces, lines=(), options=0, turn=0):
+    out = [(len(vertices) - 3) % 14, options, turn]
     for v in vertices:
         out += [s8(c) for c in v]
     out.append(len(faces) + len(lines))
@@ -27,11 +27,11 @@ def solid(vertices, faces, lines=(), options=0):
     return out
 
 
-def box(x0, y0, z0, x1, y1, z1, options=0):
+def box(x0, y0, z0, x1, y1, z1, options=0, turn=0):
     v = [(x0, y0, z0), (x1, y0, z0), (x1, y1, z0), (x0, y1, z0),
          (x0, y0, z1), (x1, y0, z1), (x1, y1, z1), (x0, y1, z1)]
     f = [[0, 3, 2, 1], [4, 5, 6, 7], [0, 1, 5, 4], [1, 2, 6, 5], [2, 3, 7, 6], [3, 0, 4, 7]]
-    return solid(v, f, options=options)
+    return solid(v, f, options=options, turn=turn)
 
 
 def l_block(options=0):
@@ -69,8 +69,11 @@ write("engine", "two-boxes-touching-framed", scene(0xA0, (10, 7, 6), (1, 1, 1), 
                                                    [box(0, 0, 0, 2, 2, 2), box(2, 0, 0, 4, 2, 1)]))
 write("engine", "box-in-box-no-intersections", scene(0x86, (9, -9, 9), (0, 0, 0), 0, 45,
                                                      [box(-2, -2, -2, 2, 2, 2), box(-1, -1, -1, 1, 1, 1)]))
+# A box turned by 1/64 of a turn about z (turn byte: axis 0, step 1) through a box on the grid.
+write("engine", "two-boxes-one-turned", scene(0x82, (12, -9, 8), (1.5, 1, 1), 0, 45,
+                                              [box(0, 0, 0, 2, 2, 2), box(1, 0.5, 0.5, 3.5, 1.5, 1.5, turn=4)]))
 # A square plate with a square hole (kind 2) and a marking across it.
-plate = [8 - 3, 0] + [s8(c) for v in [(0, 0, 0), (4, 0, 0), (4, 4, 0), (0, 4, 0),
+plate = [8 - 3, 0, 0] + [s8(c) for v in [(0, 0, 0), (4, 0, 0), (4, 4, 0), (0, 4, 0),
                                       (1, 1, 0), (1, 3, 0), (3, 3, 0), (3, 1, 0)] for c in v]
 plate += [2, 0x80 | 1, 0, 1, 2, 3, 1, 4, 5, 6, 7, 0xC0, 0, 2]
 write("engine", "plate-with-hole", scene(0x82, (2, -6, 8), (2, 2, 0), 0, 60, [plate]))
