@@ -2,6 +2,7 @@
 // extension and, for Albers' pairs, finds the partner file beside it.
 #include "stdlib/mesh_import.hpp"
 
+#include <algorithm>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -37,8 +38,9 @@ std::string lower(std::string s) {
 }
 
 // The whole file in one buffer sized from the file's size up front: no growing copies of a large mesh.
-// (Not mapped: a file truncated while mapped would kill the process with SIGBUS.)
-std::string read_file(const fs::path& path, const std::string& name) {
+// (Not mapped: a file truncated while mapped would kill the process with SIGBUS.) The size is checked
+// against the limit first: a sparse file, or one in /proc, may claim terabytes it has not got.
+std::string read_file(const fs::path& path, const std::string& name, std::uint64_t max_bytes) {
   std::error_code ec;
   const fs::file_status st = fs::status(path, ec);
   if (fs::exists(st) && !fs::is_regular_file(st))
@@ -52,14 +54,20 @@ std::string read_file(const fs::path& path, const std::string& name) {
     fail(name, 0, 0, std::string("cannot open the file: ") + std::strerror(errno),
          "check the path and permissions");
   const std::uintmax_t expected = fs::file_size(path, ec);
+  const auto too_large = [&](const std::string& size) {
+    fail(name, 0, 0, "the file has " + size + " bytes, more than the limit of " + std::to_string(max_bytes),
+         "simplify the mesh");
+  };
+  if (!ec && expected > max_bytes) too_large(std::to_string(expected));  // before any allocation
   std::string data;
   // One more byte than expected, so that a read reaching it shows the file grew meanwhile.
   data.resize(ec ? std::size_t{1} << 16 : static_cast<std::size_t>(expected) + 1);
   std::size_t size = 0;
   for (;;) {
     size += std::fread(data.data() + size, 1, data.size() - size, file.get());
+    if (size > max_bytes) too_large("at least " + std::to_string(size));  // grew, or its size was unknown
     if (size < data.size()) break;
-    data.resize(2 * data.size());
+    data.resize(static_cast<std::size_t>(std::min<std::uint64_t>(2 * data.size(), max_bytes + 1)));
   }
   if (std::ferror(file.get()))
     fail(name, 0, 0, std::string("cannot read the file: ") + std::strerror(errno),
@@ -93,7 +101,7 @@ ImportedMesh import_mesh(const fs::path& path, const MeshImportOptions& options)
   // The text is let go once read: the solid is built without it.
   auto parsed =
       [&](mesh_detail::RawMesh (*read)(std::string_view, const std::string&, const MeshImportOptions&)) {
-        std::string text = read_file(path, name);
+        std::string text = read_file(path, name, options.max_file_bytes);
         mesh_detail::RawMesh raw = read(text, name, options);
         text = std::string();
         return mesh_detail::build_mesh(std::move(raw), options);
@@ -104,7 +112,7 @@ ImportedMesh import_mesh(const fs::path& path, const MeshImportOptions& options)
   if (ext == ".ver" || ext == ".sur") {
     const bool given_ver = ext == ".ver";
     const std::string other = given_ver ? ".sur" : ".ver";
-    const std::string given_text = read_file(path, name);
+    const std::string given_text = read_file(path, name, options.max_file_bytes);
     const std::optional<fs::path> partner = find_partner(path, other);
     if (!partner) {
       std::string upper = other;
@@ -117,7 +125,7 @@ ImportedMesh import_mesh(const fs::path& path, const MeshImportOptions& options)
            "(surfaces)");
     }
     const std::string partner_name = partner->string();
-    const std::string partner_text = read_file(*partner, partner_name);
+    const std::string partner_text = read_file(*partner, partner_name, options.max_file_bytes);
     return given_ver ? import_albers(given_text, partner_text, name, partner_name, options)
                      : import_albers(partner_text, given_text, partner_name, name, options);
   }

@@ -35,6 +35,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <filesystem>
 #include <stdexcept>
 #include <string>
@@ -48,6 +49,9 @@ namespace hlr::stdlib {
 struct MeshImportOptions {
   double crease_angle_deg = 0;         // passed to the solid builder: edges below it are Smooth
   std::size_t max_faces = 10'000'000;  // faces in the file (and after triangulation) beyond this are an error
+  // import_mesh: a larger file is an error before anything is read (10 million faces take about 0.5 GB as
+  // binary STL, 1 GB as text). A sparse or /proc file may claim any size; it is never allocated.
+  std::uint64_t max_file_bytes = std::uint64_t{4} << 30;
 };
 
 struct MeshProblem {

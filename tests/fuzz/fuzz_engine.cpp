@@ -1,6 +1,7 @@
 // Fuzz target: the hidden-line engine and the pen plan on small solids and a camera decoded from the
 // bytes. Solids the builder rejects and cameras the constructors reject are expected (the input is then
-// skipped); a crash, a sanitizer report, an exception escaping or a non-finite piece is a finding.
+// skipped); a crash, a sanitizer report, an exception escaping or a piece that cannot be right (not
+// finite, not where the camera projects its end points, outside the frame) is a finding.
 //
 // Layout (bytes past the end read as 0; coordinates are signed bytes × 0.5, so small grids with exact
 // coincidences):
@@ -19,6 +20,7 @@
 #include <numbers>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "core/camera/camera_error.hpp"
@@ -93,8 +95,32 @@ std::optional<hlr::Camera> decode_camera(ByteReader& in, std::uint8_t flags) {
   }
 }
 
-bool finite(const hlr::VisibleSegment& s) {
-  return hlr::is_finite(s.p0) && hlr::is_finite(s.p1) && std::isfinite(s.s0.x + s.s0.y + s.s1.x + s.s1.y);
+// What every piece must be: finite, of an edge that exists, its picture points the camera's projection
+// of its world points, in front of the near plane and inside the frame (up to rounding).
+bool plausible(const hlr::VisibleSegment& s, const hlr::Scene& scene, const hlr::Camera& camera,
+               const hlr::HlrOptions& options) {
+  if (!hlr::is_finite(s.p0) || !hlr::is_finite(s.p1) || !std::isfinite(s.s0.x + s.s0.y + s.s1.x + s.s1.y))
+    return false;
+  if (s.hidden && !options.include_hidden) return false;
+  if (s.object >= scene.objects.size()) return false;
+  if (s.source == hlr::SegmentSource::Edge && s.edge >= scene.objects[s.object].solid->edges.size())
+    return false;
+  if (s.source == hlr::SegmentSource::Intersection && s.other >= scene.objects.size()) return false;
+  for (const auto& [world, picture] : {std::pair{s.p0, s.s0}, std::pair{s.p1, s.s1}}) {
+    const hlr::Point3 view = camera.view(world);
+    if (camera.projection == hlr::Projection::Perspective && view.z < camera.near_depth * (1 - 1e-9))
+      return false;
+    const hlr::Point2 projected = camera.project_view(view);
+    const double scale = 1 + std::abs(picture.x) + std::abs(picture.y);
+    if (std::abs(projected.x - picture.x) + std::abs(projected.y - picture.y) > 1e-6 * scale) return false;
+    if (camera.frame) {
+      const double slack = 1e-9 * (1 + camera.frame->width() + camera.frame->height());
+      if (picture.x < camera.frame->xmin - slack || picture.x > camera.frame->xmax + slack ||
+          picture.y < camera.frame->ymin - slack || picture.y > camera.frame->ymax + slack)
+        return false;
+    }
+  }
+  return true;
 }
 
 }  // namespace
@@ -117,7 +143,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   options.threads = 1;
   const hlr::FrameResult result = hlr::render_frame(scene, *camera, options);
   for (const hlr::VisibleSegment& s : result.segments)
-    if (!finite(s) || (s.hidden && !options.include_hidden)) std::abort();
+    if (!plausible(s, scene, *camera, options)) std::abort();
 
   hlr::PagePlotOptions plot;
   plot.include_hidden = options.include_hidden;

@@ -579,6 +579,23 @@ TEST_F(MeshImportFiles, UnreadableFilesReportTheReason) {
   EXPECT_EQ(e.to_string(), (dir_ / "e.off").string() + ": the file is empty; hint: " + e.hint);
 }
 
+// Found by fuzzing (a script importing a sparse file): the buffer was sized from the file's claimed size,
+// so a 1 TB sparse file ended the process with std::bad_alloc. Files beyond the limit are refused unread,
+// and a file whose size is not known (in /proc, claiming 0 bytes) is read only up to it.
+TEST_F(MeshImportFiles, FilesBeyondTheSizeLimitAreRefusedUnread) {
+  const fs::path sparse = write("sparse.off", "OFF\n");
+  fs::resize_file(sparse, std::uintmax_t{1} << 40);
+  expect_problem(error_of([&] { import_mesh(sparse); }), 0, 0,
+                 "the file has 1099511627776 bytes, more than the limit of 4294967296");
+  MeshImportOptions small;
+  small.max_file_bytes = 100;
+  const fs::path cube = write("cube.off", off(kCubeVertices, kCubeFaces));
+  expect_problem(error_of([&] { import_mesh(cube, small); }), 0, 0, "more than the limit of 100");
+  fs::create_symlink("/proc/self/status", dir_ / "status.off");
+  expect_problem(error_of([&] { import_mesh(dir_ / "status.off", small); }), 0, 0,
+                 "the file has at least 101 bytes, more than the limit of 100");
+}
+
 TEST(MeshImportProblem, ToStringFormat) {
   EXPECT_EQ((MeshProblem{"a.off", 3, 7, "bad", "fix it"}).to_string(), "a.off:3:7: bad; hint: fix it");
   EXPECT_EQ((MeshProblem{"a.off", 3, 0, "bad", ""}).to_string(), "a.off:3: bad");
