@@ -5,25 +5,18 @@
 // The script lives in an empty directory of its own, so `include` and `import` in fuzzed scripts find
 // no real files next to it.
 //
-// An evaluation that runs long is stopped after kEvaluationLimit through the Ctrl-C flag, which the
-// evaluator checks every few thousand steps: a loop that would only end at the step limit (10 million
-// steps, about 16 s under the sanitizers) is not a finding, and would otherwise be reported as a timeout.
-// Work that never steps (a built-in running away) is not stopped this way, so libFuzzer's -timeout still
-// catches it.
+// The run has small limits, as `--limit` and `--frame-timeout` would set them: a loop that runs long
+// stops at the step limit or the frame budget with an ordinary located error, so only work that never
+// steps (a built-in running away) can reach libFuzzer's -timeout, and that is a finding.
 #include <stdlib.h>  // mkdtemp
 
-#include <chrono>
-#include <condition_variable>
 #include <cstdlib>
 #include <filesystem>
-#include <mutex>
 #include <string>
 #include <system_error>
-#include <thread>
 
-#include "core/hlr/render_frame.hpp"
 #include "runtime/eval_error.hpp"
-#include "runtime/interrupt.hpp"
+#include "runtime/limits.hpp"
 #include "runtime/program.hpp"
 #include "runtime/run_error.hpp"
 #include "tests/fuzz/fuzz_input.hpp"
@@ -50,35 +43,19 @@ class EmptyDirectory {
   std::filesystem::path path_;
 };
 
-constexpr std::chrono::milliseconds kEvaluationLimit{1000};
-
-// While alive, sets the interrupt flag once `limit` has passed; clears it when destroyed.
-class Watchdog {
- public:
-  explicit Watchdog(std::chrono::milliseconds limit)
-      : thread_([this, limit] {
-          std::unique_lock lock(mutex_);
-          if (!finished_.wait_for(lock, limit, [this] { return done_; }))
-            hlr::runtime::interrupt_requested() = true;
-        }) {}
-  ~Watchdog() {
-    {
-      std::lock_guard lock(mutex_);
-      done_ = true;
-    }
-    finished_.notify_one();
-    thread_.join();
-    hlr::runtime::interrupt_requested() = false;
-  }
-  Watchdog(const Watchdog&) = delete;
-  Watchdog& operator=(const Watchdog&) = delete;
-
- private:
-  std::mutex mutex_;
-  std::condition_variable finished_;
-  bool done_ = false;
-  std::thread thread_;  // last: it starts once the members it uses exist
-};
+// Small enough that each input takes milliseconds, large enough for every seed to reach its frame.
+hlr::runtime::Limits fuzz_limits() {
+  hlr::runtime::Limits limits;
+  limits.steps = 200'000;
+  limits.faces = 20'000;
+  limits.vertices = 100'000;
+  limits.segments = 100'000;
+  limits.memory_mb = 64;
+  limits.list = 100'000;
+  limits.string = 1'000'000;
+  limits.frame_timeout_s = 1.0;
+  return limits;
+}
 
 const std::filesystem::path& script_path() {
   static const EmptyDirectory directory;
@@ -92,12 +69,11 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const std::string text(hlr::fuzz::as_text(data, size));
   const auto program = hlr::runtime::Program::from_text("fuzz.hls", text, script_path());
   if (!program->parsed()) return 0;
-  const Watchdog watchdog(kEvaluationLimit);
+  program->set_limits(fuzz_limits());
   try {
     (void)program->evaluate_first_frame();
   } catch (const hlr::runtime::EvalError&) {
   } catch (const hlr::runtime::RunError&) {
-  } catch (const hlr::RenderCancelled&) {  // the watchdog stopped it
   }
   return 0;
 }
