@@ -68,7 +68,11 @@ po::options_description visible_options() {
       ("step", po::value<std::string>()->value_name("MM"),
        "step of the incremental plotter tape (.steps; default 0.1 mm)")  //
       ("plain", "no frame border or caption on PDF/SVG/PNG")             //
-      ("clip", "clip HPGL to the plotter's range instead of failing")    //
+      ("svg", po::value<std::string>()->value_name("plotter|document"),
+       "SVG for a pen plotter (AxiDraw, vpype, Inkscape: a layer per pen, a path per planned stroke, "
+       "nothing else) or a document (cairo: border, caption); default document, plotter when a plotter is "
+       "named")                                                                                      //
+      ("clip", "cut strokes at the plotter's reach (HPGL) or the page (plotter SVG) instead of failing")  //
       ("hpgl-moves", po::value<std::string>()->value_name("relative|absolute"),
        "HPGL moves (default: the profile's)")  //
       ("pen-order", po::value<std::string>()->value_name("none|greedy|optimized"),
@@ -96,6 +100,7 @@ constexpr const char* kExamples =
     "  hlrscript scene.hls -o lines.json                 # the visible segments as JSON\n"
     "  hlrscript scene.hls -o scene.svg --paper A3       # SVG on A3 landscape\n"
     "  hlrscript scene.hls -o scene.png --dpi 300        # a quick raster\n"
+    "  hlrscript scene.hls -o scene.svg --svg plotter    # layers per pen for AxiDraw, vpype, Inkscape\n"
     "  hlrscript scene.hls -o scene.hpgl --plotter hp7475a --paper A4   # for an HP 7475A\n"
     "  hlrscript landing.hls -o 'f-{frame:03}.hpgl'      # one plotter file per frame\n"
     "  hlrscript landing.hls -o 'f-{frame:04}.pdf' --frames 0-99 --jobs 2\n"
@@ -162,6 +167,14 @@ bool parse_device_options(const po::variables_map& vm, DeviceOptions& d, std::st
   if (budget) d.plan_budget_ms = *budget;
   if (vm.count("plotter")) d.plotter = vm["plotter"].as<std::string>();
   d.clip = vm.count("clip") > 0;
+  if (vm.count("svg")) {
+    const std::string v = vm["svg"].as<std::string>();
+    if (v != "plotter" && v != "document") {
+      error = "--svg takes 'plotter' or 'document', not '" + v + "'";
+      return false;
+    }
+    d.plotter_svg = v == "plotter";
+  }
   d.decorations = vm.count("plain") == 0;
   if (vm.count("hpgl-moves")) {
     const std::string v = vm["hpgl-moves"].as<std::string>();

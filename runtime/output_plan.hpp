@@ -60,7 +60,8 @@ struct DeviceOptions {
   double step_mm = 0.1;                      // --step: the incremental plotter's step (.steps)
   std::optional<double> line_width_mm;       // --line-width: every pen's width (cairo devices)
   std::optional<std::string> plotter;        // --plotter NAME (HPGL profile)
-  bool clip = false;                         // --clip: clip HPGL to the plotter's range instead of failing
+  bool clip = false;                         // --clip: cut HPGL at the plotter's reach, plotter SVG at the page
+  std::optional<bool> plotter_svg;           // --svg plotter|document (default: plotter when one is named)
   std::optional<bool> relative;              // --hpgl-moves relative|absolute
   PenOrder pen_order = PenOrder::Optimized;  // --pen-order
   double plan_budget_ms = 200;               // --plan-budget (per frame, Optimized only)

@@ -93,8 +93,17 @@ const char* pen_order_name(PenOrder order) {
 std::shared_ptr<const Device> device_for(DeviceKind kind, const FrameScene& scene, const RunSettings& run) {
   const DeviceOptions& d = run.device;
   switch (kind) {
-    case DeviceKind::Pdf:
     case DeviceKind::Svg:
+      // For a plotter when asked, or when the run names a plotter (it is going to one).
+      if (d.plotter_svg.value_or(d.plotter.has_value() || (scene.output && scene.output->plotter))) {
+        PlotterSvgOptions svg;
+        svg.pens = pen_table_for(scene, d);
+        svg.title = run.title;
+        svg.clip = d.clip;
+        return make_plotter_svg_device(svg);
+      }
+      [[fallthrough]];
+    case DeviceKind::Pdf:
     case DeviceKind::Png: {
       CairoOptions cairo;
       cairo.format = kind == DeviceKind::Pdf   ? CairoFormat::Pdf

@@ -114,6 +114,25 @@ class CairoDevice : public Device {
   CairoOptions o_;
 };
 
+class PlotterSvgDevice : public Device {
+ public:
+  explicit PlotterSvgDevice(PlotterSvgOptions options) : o_(std::move(options)) {}
+  const char* name() const override { return "SVG"; }
+  bool one_frame_per_file() const override { return true; }
+  DevicePlanning planning(double, double) const override { return page_planning(); }
+  EncodedFrame encode(const DeviceFrame& frame) const override {
+    EncodedFrame out;
+    out.bytes = to_plotter_svg(frame.plot.page, o_);
+    return out;
+  }
+  std::unique_ptr<DeviceFile> open(const fs::path& path) const override {
+    return std::make_unique<ByteFile>(path);
+  }
+
+ private:
+  PlotterSvgOptions o_;
+};
+
 class PdfDevice : public Device {
  public:
   explicit PdfDevice(PdfOptions options) : o_(std::move(options)) {}
@@ -254,6 +273,9 @@ class JsonDevice : public Device {
 std::unique_ptr<Device> make_cairo_device(const CairoOptions& options) {
   if (options.format == CairoFormat::Pdf) return std::make_unique<PdfDevice>(pdf_options(options));
   return std::make_unique<CairoDevice>(options);
+}
+std::unique_ptr<Device> make_plotter_svg_device(const PlotterSvgOptions& options) {
+  return std::make_unique<PlotterSvgDevice>(options);
 }
 std::unique_ptr<Device> make_hpgl_device(const HpglProfile& profile, const HpglOptions& options) {
   return std::make_unique<HpglDevice>(profile, options);

@@ -7,6 +7,7 @@
 #include "core/device/device.hpp"
 #include "core/device/hpgl_device.hpp"
 #include "core/device/json_device.hpp"
+#include "core/device/plotter_svg.hpp"
 #include "core/device/step_device.hpp"
 
 namespace hlr {
@@ -15,6 +16,9 @@ namespace hlr {
 // Planned on the page grid from the page's top-left corner, with the generic plotter's speeds for the
 // time estimate.
 std::unique_ptr<Device> make_cairo_device(const CairoOptions& options);
+// SVG for pen plotters (core/device/plotter_svg.hpp): layers per pen, one path per planned stroke. Planned
+// as the cairo devices are.
+std::unique_ptr<Device> make_plotter_svg_device(const PlotterSvgOptions& options);
 // HP-GL for `profile`: planned in its plotter units from its origin, within the margin its reach needs.
 std::unique_ptr<Device> make_hpgl_device(const HpglProfile& profile, const HpglOptions& options = {});
 // The incremental plotter's tape: planned on its step grid from the sheet's bottom-left corner.

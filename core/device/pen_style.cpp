@@ -1,7 +1,9 @@
 #include "core/device/pen_style.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
 #include <string>
 
@@ -137,6 +139,16 @@ std::optional<Colour> parse_colour(std::string_view text) {
     if (same) return from_rgb(n.rgb);
   }
   return std::nullopt;
+}
+
+std::string colour_text(const Colour& colour) {
+  const auto byte = [](double v) { return static_cast<unsigned>(std::lround(std::clamp(v, 0.0, 1.0) * 255)); };
+  const unsigned rgb = byte(colour.r) << 16 | byte(colour.g) << 8 | byte(colour.b);
+  for (const NamedColour& n : kNames)
+    if (n.rgb == rgb) return std::string(n.name);
+  char text[16];
+  std::snprintf(text, sizeof text, "#%06x", rgb & 0xffffffu);
+  return text;
 }
 
 }  // namespace hlr

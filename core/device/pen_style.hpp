@@ -64,4 +64,8 @@ class PenTable {
 // nullopt for anything else.
 std::optional<Colour> parse_colour(std::string_view text);
 
+// The colour as a person would name it: a colour name above when it is exactly that colour (green is
+// CSS green, #008000), else "#rrggbb" (lower case). parse_colour() reads either back.
+std::string colour_text(const Colour& colour);
+
 }  // namespace hlr
