@@ -46,10 +46,9 @@ po::options_description visible_options() {
        "(built and drawn, 10000000), vertices (drawn, 30000000), segments (visible pieces, 20000000), memory "
        "(MB estimated for the solids made, 16384), calls (nesting, 256), list (items, 10000000), string "
        "(bytes, 10000000)")  //
-      (
-          "frame-timeout", po::value<std::string>()->value_name("SECONDS"),
-          "stop a frame that takes longer (evaluation, hidden lines and pen plan) with an error; default "
-          "none")                                                                                 //
+      ("frame-timeout", po::value<std::string>()->value_name("SECONDS"),
+       "stop a frame that takes longer (evaluation, hidden lines and pen plan) with an error; default "
+       "none")                                                                                    //
       ("keep-going", "when a frame fails, render the other frames anyway (the run still fails)")  //
       ("stats", "print per-frame statistics (hidden-line and pen plan) to stderr")                //
       ("paper", po::value<std::string>()->value_name("SIZE"),
@@ -67,11 +66,14 @@ po::options_description visible_options() {
        "declares")  //
       ("step", po::value<std::string>()->value_name("MM"),
        "step of the incremental plotter tape (.steps; default 0.1 mm)")  //
-      ("plain", "no frame border or caption on PDF/SVG/PNG")             //
+      ("plain", "no frame border or caption")                            //
       ("svg", po::value<std::string>()->value_name("plotter|document"),
        "SVG for a pen plotter (AxiDraw, vpype, Inkscape: a layer per pen, a path per planned stroke, "
        "nothing else) or a document (cairo: border, caption); default document, plotter when a plotter is "
-       "named")                                                                                      //
+       "named")  //
+      ("text", po::value<std::string>()->value_name("stroke|outline"),
+       "the caption in single-stroke letters planned with the drawing (the default on HPGL, G-code and "
+       "plotter SVG) or as a font's outlines (the default on PDF, SVG, PNG and JSON)")                    //
       ("clip", "cut strokes at the plotter's reach (HPGL) or the page (plotter SVG) instead of failing")  //
       ("hpgl-moves", po::value<std::string>()->value_name("relative|absolute"),
        "HPGL moves (default: the profile's)")  //
@@ -167,6 +169,14 @@ bool parse_device_options(const po::variables_map& vm, DeviceOptions& d, std::st
   if (budget) d.plan_budget_ms = *budget;
   if (vm.count("plotter")) d.plotter = vm["plotter"].as<std::string>();
   d.clip = vm.count("clip") > 0;
+  if (vm.count("text")) {
+    const std::string v = vm["text"].as<std::string>();
+    if (v != "stroke" && v != "outline") {
+      error = "--text takes 'stroke' or 'outline', not '" + v + "'";
+      return false;
+    }
+    d.text_strokes = v == "stroke";
+  }
   if (vm.count("svg")) {
     const std::string v = vm["svg"].as<std::string>();
     if (v != "plotter" && v != "document") {

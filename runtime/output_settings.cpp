@@ -176,6 +176,14 @@ void resolve_device(const FrameScene& scene, const RunSettings& run, FrameSettin
     plot.spec.margin_mm = planning.min_margin_mm;
     check_page_spec(plot.spec);
   }
+  // A plotter draws the caption in single strokes, where its pen reaches: the margin makes room for it.
+  plot.caption_as_strokes =
+      run.device.decorations && run.device.text_strokes.value_or(planning.text_as_strokes);
+  plot.reach_margin_mm = planning.min_margin_mm;
+  if (plot.caption_as_strokes && plot.spec.margin_mm < planning.min_margin_mm + kCaptionBandMm) {
+    plot.spec.margin_mm = planning.min_margin_mm + kCaptionBandMm;
+    check_page_spec(plot.spec);
+  }
   plot.plan.order = run.device.pen_order;
   plot.plan.time_budget_ms = run.device.plan_budget_ms;
   plot.plan.grid_mm = planning.grid_mm;

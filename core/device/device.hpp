@@ -29,6 +29,7 @@ struct DevicePlanning {
   Point2 home{0, 0};         // where the pen starts and ends, page mm
   PlotterSpeeds speeds;      // for the plotting-time estimate
   double min_margin_mm = 0;  // the pen reaches no closer to the sheet's edge: the layout keeps this margin
+  bool text_as_strokes = false;  // plotters draw the caption as single-stroke text (--text overrides)
 };
 
 // One frame, laid out and planned: what every device draws (plot) and what JSON also describes.

@@ -119,7 +119,11 @@ class PlotterSvgDevice : public Device {
   explicit PlotterSvgDevice(PlotterSvgOptions options) : o_(std::move(options)) {}
   const char* name() const override { return "SVG"; }
   bool one_frame_per_file() const override { return true; }
-  DevicePlanning planning(double, double) const override { return page_planning(); }
+  DevicePlanning planning(double, double) const override {
+    DevicePlanning p = page_planning();
+    p.text_as_strokes = true;
+    return p;
+  }
   EncodedFrame encode(const DeviceFrame& frame) const override {
     EncodedFrame out;
     out.bytes = to_plotter_svg(frame.plot.page, o_);
@@ -182,6 +186,7 @@ class HpglDevice : public Device {
     // centred on the real sheet and never needs clipping; the pen starts at the plotter's origin.
     p.min_margin_mm = hpgl_min_margin_mm(profile_, w, h, o_.paper);
     p.home = hpgl_home_on_page(profile_, w, h, o_.paper);
+    p.text_as_strokes = true;
     return p;
   }
   EncodedFrame encode(const DeviceFrame& frame) const override {

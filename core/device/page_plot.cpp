@@ -1,10 +1,11 @@
 #include "core/device/page_plot.hpp"
 
-#include "core/limits.hpp"
-
+#include <algorithm>
 #include <cmath>
 
 #include "core/device/atomic_file.hpp"
+#include "core/device/stroke_text.hpp"
+#include "core/limits.hpp"
 
 namespace hlr {
 namespace {
@@ -20,6 +21,29 @@ int checked_pen(int pen) {
   if (pen < 1 || pen > kMaxPen)
     throw DeviceError("pen " + std::to_string(pen) + " is outside 1.." + std::to_string(kMaxPen));
   return pen;
+}
+
+// The caption's strokes as pieces of pen 1: on the baseline where the printed caption sits (0.6 of the
+// margin up from the bottom edge) unless the pen cannot reach its descenders there, then raised to the
+// reach; made smaller when the band between the drawing and the reach, or the page's width, is too small.
+void add_caption(const std::string& caption, const PlotPage& page, double reach,
+                 std::vector<PlotPiece>& pieces) {
+  const double margin = page.margin_mm, descent_per_cap = 7.0 / 21.0;
+  const double band = margin - reach - 1;  // from the reach's edge to 1 mm below the drawing
+  double cap = std::min(kCaptionCapHeightMm, band / (1 + descent_per_cap));
+  const double left = std::max(margin, reach), room = page.width_mm - 2 * left;
+  const double width = stroke_text_width_mm(caption, cap);
+  if (width > room && width > 0) cap *= room / width;
+  if (!(cap > 0.5)) return;  // no room for legible letters: no caption
+  const double baseline =
+      std::min(page.height_mm - 0.6 * margin, page.height_mm - reach - cap * descent_per_cap);
+  for (const std::vector<Point2>& stroke : stroke_text(caption, {left, baseline}, cap))
+    for (std::size_t i = 1; i < stroke.size(); ++i) {
+      PlotPiece p;
+      p.a = stroke[i - 1];
+      p.b = stroke[i];
+      pieces.push_back(p);
+    }
 }
 
 }  // namespace
@@ -51,6 +75,10 @@ PagePlot plot_page(const std::vector<VisibleSegment>& segments, const std::optio
     p.pen = s.hidden && hidden_pen > 0 ? hidden_pen : object_pen;
     p.layer = s.hidden ? StrokeLayer::Hidden : StrokeLayer::Visible;
     pieces.push_back(p);
+  }
+  if (o.caption_as_strokes && !out.page.caption.empty()) {
+    add_caption(out.page.caption, out.page, o.reach_margin_mm, pieces);
+    out.page.caption.clear();  // drawn: no device prints it again
   }
   PenPlan plan = plan_pen_strokes(pieces, o.plan);
   out.page.strokes = std::move(plan.strokes);

@@ -20,7 +20,17 @@ struct PagePlotOptions {
   std::optional<int> hidden_pen;  // pen of hidden pieces; unset: the object's pen
   bool include_hidden = false;    // hidden pieces are planned (and drawn) only when on
   PlanOptions plan;
+  // The caption as single-stroke text (core/device/stroke_text.hpp) in pen 1, planned with the drawing,
+  // instead of a string the device prints (plotters, and --text stroke): see caption_baseline().
+  bool caption_as_strokes = false;
+  double reach_margin_mm =
+      0;  // the pen reaches no closer to the sheet's edge (DevicePlanning::min_margin_mm)
 };
+
+// The caption's size in stroke text: about the 10 pt of the printed caption.
+inline constexpr double kCaptionCapHeightMm = 2.5;
+// The bottom margin a stroke caption needs beyond the pen's reach: descenders, caps and a gap above them.
+inline constexpr double kCaptionBandMm = kCaptionCapHeightMm * (1 + 7.0 / 21.0) + 1;
 
 struct PagePlot {
   PlotPage page;

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# Plotter SVG (--svg plotter) on every example: frame 0 with its hidden layer, checked against the JSON of
-# the same frame by plotter_svg_check.py (our XML reading, Inkscape's --query-all) and drawn by librsvg's
+# Plotter SVG (--svg plotter) on every example: frame 0 with its hidden layer and its caption in single
+# strokes, checked against the JSON of the same frame (--text stroke) by plotter_svg_check.py (our XML reading, Inkscape's --query-all) and drawn by librsvg's
 # rsvg-convert; then what selects it: a named plotter makes it the default, --svg document keeps cairo's.
 #   plotter_svg.sh HLRSCRIPT EXAMPLES_DIR WORK
 set -uo pipefail
@@ -25,7 +25,7 @@ while IFS= read -r script; do
   name=$(basename "${script%.hls}")
   "$hlrscript" "$script" --frames 0 --hidden dashed -o "$name.svg" --svg plotter >/dev/null 2>"$name.err" ||
     { fail "$script -o .svg --svg plotter: $(head -3 "$name.err")"; continue; }
-  "$hlrscript" "$script" --frames 0 --hidden dashed -o "$name.json" >/dev/null 2>"$name.err" ||
+  "$hlrscript" "$script" --frames 0 --hidden dashed -o "$name.json" --text stroke >/dev/null 2>"$name.err" ||
     { fail "$script -o .json: $(head -3 "$name.err")"; continue; }
   python3 "$here/plotter_svg_check.py" "$name.svg" "$name.json" || fail "$script: the plotter SVG disagrees"
   rsvg-convert "$name.svg" -o "$name.png" 2>"$name.err" && [ -s "$name.png" ] ||

@@ -170,13 +170,14 @@ const char* kPenScene =
 TEST(DevicesAgree, JsonAndHpglDrawTheSameStrokes) {
   const test::TempDir dir(current_test_name());
   const std::string script = dir.write("pens.hls", kPenScene).string();
-  // Both orders draw the same segments. With `none` both devices keep the pieces in file order, so the
+  // Both orders draw the same segments, the caption's single-stroke letters included (a plotter's default,
+  // --text stroke for JSON). With `none` both devices keep the pieces in file order, so the
   // strokes correspond one to one; `optimized` plans HPGL from the plotter's home (the generic profile's
   // origin, the page's bottom-left corner) and JSON from the page's top-left, so only the lines agree.
   for (const std::string order : {"none", "optimized"}) {
     SCOPED_TRACE(order);
     const fs::path json = dir.path() / (order + ".json"), hpgl = dir.path() / (order + ".hpgl");
-    ASSERT_EQ(run({script, "-o", json.string(), "--pen-order", order}).code, 0);
+    ASSERT_EQ(run({script, "-o", json.string(), "--pen-order", order, "--text", "stroke"}).code, 0);
     const Result r = run({script, "-o", hpgl.string(), "--plotter", "generic", "--pen-order", order});
     ASSERT_EQ(r.code, 0) << r.err;
     const JsonPlot j = json_plot(json);

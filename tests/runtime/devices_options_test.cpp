@@ -246,8 +246,8 @@ TEST(DevicesErrors, PenBeyondThePlottersPens) {
   EXPECT_EQ(r.code, 73);
   EXPECT_TRUE(contains(r.err, "uses pen 7 but plotter 'hp7475a' has pens 1–6")) << r.err;
   EXPECT_EQ(written_files(dir.path()), std::vector<std::string>{});
-  // The 8-pen 7550 takes it.
-  EXPECT_EQ(run({script, "-o", hpgl.string(), "--plotter", "hp7550"}).code, 0);
+  // The 8-pen 7550 takes it (--plain: no caption, which is drawn with pen 1).
+  EXPECT_EQ(run({script, "-o", hpgl.string(), "--plotter", "hp7550", "--plain"}).code, 0);
   const hlr::test::HpglReplay replay = hlr::test::read_hpgl(read_text(hpgl));
   ASSERT_EQ(replay.error, "");
   ASSERT_FALSE(replay.runs.empty());

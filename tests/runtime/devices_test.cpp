@@ -257,7 +257,7 @@ TEST_P(Hp2xxAgainstPng, SameDrawing) {
   // 100 dpi on both sides; the PNG's default 0.25 mm pens are about one pixel wide, as hp2xx draws.
   const Result a = run({script, "-o", png.string(), "--plain", "--dpi", "100", "--hidden", "off"});
   ASSERT_EQ(a.code, 0) << a.err;
-  const Result b = run({script, "-o", hpgl.string(), "--plotter", "generic", "--hidden", "off"});
+  const Result b = run({script, "-o", hpgl.string(), "--plotter", "generic", "--plain", "--hidden", "off"});
   ASSERT_EQ(b.code, 0) << b.err;
   const hlr::test::Ink cairo = hlr::test::ink_of_png(png);
   ASSERT_EQ(cairo.w, 1169);  // A4 landscape at 100 dpi
