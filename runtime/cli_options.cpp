@@ -138,6 +138,19 @@ bool number_option(const po::variables_map& vm, const char* name, double lo, dou
   return true;
 }
 
+// An option taking one of two words: true for the first, false for the second.
+bool either_option(const po::variables_map& vm, const char* name, const char* yes, const char* no,
+                   std::optional<bool>& out, std::string& error) {
+  if (!vm.count(name)) return true;
+  const std::string v = vm[name].as<std::string>();
+  if (v != yes && v != no) {
+    error = std::string("--") + name + " takes '" + yes + "' or '" + no + "', not '" + v + "'";
+    return false;
+  }
+  out = v == yes;
+  return true;
+}
+
 bool parse_device_options(const po::variables_map& vm, DeviceOptions& d, std::string& error) {
   if (vm.count("landscape") && vm.count("portrait")) {
     error = "--landscape and --portrait exclude each other";
@@ -169,31 +182,11 @@ bool parse_device_options(const po::variables_map& vm, DeviceOptions& d, std::st
   if (budget) d.plan_budget_ms = *budget;
   if (vm.count("plotter")) d.plotter = vm["plotter"].as<std::string>();
   d.clip = vm.count("clip") > 0;
-  if (vm.count("text")) {
-    const std::string v = vm["text"].as<std::string>();
-    if (v != "stroke" && v != "outline") {
-      error = "--text takes 'stroke' or 'outline', not '" + v + "'";
-      return false;
-    }
-    d.text_strokes = v == "stroke";
-  }
-  if (vm.count("svg")) {
-    const std::string v = vm["svg"].as<std::string>();
-    if (v != "plotter" && v != "document") {
-      error = "--svg takes 'plotter' or 'document', not '" + v + "'";
-      return false;
-    }
-    d.plotter_svg = v == "plotter";
-  }
   d.decorations = vm.count("plain") == 0;
-  if (vm.count("hpgl-moves")) {
-    const std::string v = vm["hpgl-moves"].as<std::string>();
-    if (v != "relative" && v != "absolute") {
-      error = "--hpgl-moves takes 'relative' or 'absolute', not '" + v + "'";
-      return false;
-    }
-    d.relative = v == "relative";
-  }
+  if (!either_option(vm, "text", "stroke", "outline", d.text_strokes, error) ||
+      !either_option(vm, "svg", "plotter", "document", d.plotter_svg, error) ||
+      !either_option(vm, "hpgl-moves", "relative", "absolute", d.relative, error))
+    return false;
   if (vm.count("pen-order")) {
     const std::string v = vm["pen-order"].as<std::string>();
     if (v == "none")

@@ -95,43 +95,42 @@ DevicePlanning page_planning() {
   return p;
 }
 
-class CairoDevice : public Device {
+// A device whose file is one frame's page, as bytes made from the page alone.
+class OneFrameDevice : public Device {
  public:
-  explicit CairoDevice(CairoOptions options) : o_(std::move(options)) {}
-  const char* name() const override { return o_.format == CairoFormat::Svg ? "SVG" : "PNG"; }
   bool one_frame_per_file() const override { return true; }
-  DevicePlanning planning(double, double) const override { return page_planning(); }
-  EncodedFrame encode(const DeviceFrame& frame) const override {
+  EncodedFrame encode(const DeviceFrame& frame) const final {
     EncodedFrame out;
-    out.bytes = cairo_page_bytes(frame.plot.page, o_);
+    out.bytes = page_bytes(frame.plot.page);
     return out;
   }
+  virtual std::string page_bytes(const PlotPage& page) const = 0;
   std::unique_ptr<DeviceFile> open(const fs::path& path) const override {
     return std::make_unique<ByteFile>(path);
   }
+};
+
+class CairoDevice : public OneFrameDevice {
+ public:
+  explicit CairoDevice(CairoOptions options) : o_(std::move(options)) {}
+  const char* name() const override { return o_.format == CairoFormat::Svg ? "SVG" : "PNG"; }
+  DevicePlanning planning(double, double) const override { return page_planning(); }
+  std::string page_bytes(const PlotPage& page) const override { return cairo_page_bytes(page, o_); }
 
  private:
   CairoOptions o_;
 };
 
-class PlotterSvgDevice : public Device {
+class PlotterSvgDevice : public OneFrameDevice {
  public:
   explicit PlotterSvgDevice(PlotterSvgOptions options) : o_(std::move(options)) {}
   const char* name() const override { return "SVG"; }
-  bool one_frame_per_file() const override { return true; }
   DevicePlanning planning(double, double) const override {
     DevicePlanning p = page_planning();
     p.text_as_strokes = true;
     return p;
   }
-  EncodedFrame encode(const DeviceFrame& frame) const override {
-    EncodedFrame out;
-    out.bytes = to_plotter_svg(frame.plot.page, o_);
-    return out;
-  }
-  std::unique_ptr<DeviceFile> open(const fs::path& path) const override {
-    return std::make_unique<ByteFile>(path);
-  }
+  std::string page_bytes(const PlotPage& page) const override { return to_plotter_svg(page, o_); }
 
  private:
   PlotterSvgOptions o_;
@@ -170,14 +169,13 @@ class PdfDevice : public Device {
   PdfOptions o_;
 };
 
-class HpglDevice : public Device {
+class HpglDevice : public OneFrameDevice {
  public:
   HpglDevice(HpglProfile profile, HpglOptions options)
       : profile_(std::move(profile)), o_(std::move(options)) {
     check_hpgl_profile(profile_);
   }
   const char* name() const override { return "HPGL"; }
-  bool one_frame_per_file() const override { return true; }
   DevicePlanning planning(double w, double h) const override {
     DevicePlanning p;
     p.grid_mm = profile_.unit_mm;
@@ -189,25 +187,17 @@ class HpglDevice : public Device {
     p.text_as_strokes = true;
     return p;
   }
-  EncodedFrame encode(const DeviceFrame& frame) const override {
-    EncodedFrame out;
-    out.bytes = to_hpgl(frame.plot.page, profile_, o_);
-    return out;
-  }
-  std::unique_ptr<DeviceFile> open(const fs::path& path) const override {
-    return std::make_unique<ByteFile>(path);
-  }
+  std::string page_bytes(const PlotPage& page) const override { return to_hpgl(page, profile_, o_); }
 
  private:
   HpglProfile profile_;
   HpglOptions o_;
 };
 
-class StepDevice : public Device {
+class StepDevice : public OneFrameDevice {
  public:
   explicit StepDevice(StepOptions options) : o_(options) {}
   const char* name() const override { return "plotter-steps"; }
-  bool one_frame_per_file() const override { return true; }
   DevicePlanning planning(double, double h) const override {
     // The thesis's Benson Lehner: steps at up to 2 cm/s, the pen starting at the sheet's corner.
     DevicePlanning p;
@@ -216,14 +206,7 @@ class StepDevice : public Device {
     p.speeds = {20, 20, 0.1};
     return p;
   }
-  EncodedFrame encode(const DeviceFrame& frame) const override {
-    EncodedFrame out;
-    out.bytes = to_plotter_steps(frame.plot.page, o_);
-    return out;
-  }
-  std::unique_ptr<DeviceFile> open(const fs::path& path) const override {
-    return std::make_unique<ByteFile>(path);
-  }
+  std::string page_bytes(const PlotPage& page) const override { return to_plotter_steps(page, o_); }
 
  private:
   StepOptions o_;
