@@ -215,6 +215,7 @@ std::optional<GcodeProfile> gcode_base(const std::vector<lang::Argument>& entrie
 // `plotter NAME { base: "grbl-servo", ... }`: the base's profile with the given keys applied.
 GcodeProfile gcode_plotter(const std::string& name, GcodeProfile profile, const GivenOptions& given,
                            const OptionList& list, const lang::SourceSpan& name_span) {
+  profile.info = "declared in the script, based on " + profile.name;  // the base's info describes the base
   profile.name = name;
   const bool servo = profile.pen_mode == GcodePenMode::Servo;
   const std::string feeds = "from " + format_for_message(kMinGcodeFeedMmMin) + " to " +
