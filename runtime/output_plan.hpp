@@ -59,8 +59,8 @@ struct DeviceOptions {
   bool decorations = true;                   // --plain: no frame border or caption
   double step_mm = 0.1;                      // --step: the incremental plotter's step (.steps)
   std::optional<double> line_width_mm;       // --line-width: every pen's width (cairo devices)
-  std::optional<std::string> plotter;        // --plotter NAME (HPGL profile)
-  bool clip = false;                         // --clip: clip HPGL to the plotter's range instead of failing
+  std::optional<std::string> plotter;        // --plotter NAME (HPGL or G-code profile)
+  bool clip = false;                         // --clip: clip HPGL/G-code to the plotter's reach, not fail
   std::optional<bool> relative;              // --hpgl-moves relative|absolute
   PenOrder pen_order = PenOrder::Optimized;  // --pen-order
   double plan_budget_ms = 200;               // --plan-budget (per frame, Optimized only)
