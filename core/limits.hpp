@@ -40,4 +40,15 @@ inline constexpr long kHpglMaxStep = 32000;
 inline constexpr double kMinPlotterStepMm = 0.001;
 inline constexpr double kMaxPlotterStepMm = 10;
 
+// ---- G-code (GRBL pen plotters)
+// Feeds in mm/min: 100 m/min is beyond any pen plotter's motors; a feed below 1 mm/min never finishes.
+inline constexpr double kMinGcodeFeedMmMin = 1;
+inline constexpr double kMaxGcodeFeedMmMin = 100000;
+// A dwell longer than 10 s is no longer waiting for a pen to settle.
+inline constexpr double kMaxGcodeDwellS = 10;
+// Spindle S values (servo pens: GRBL's $30 maximum is 1000 by default; some builds use pulse widths in µs).
+inline constexpr double kMaxGcodeSpindle = 100000;
+// Z positions of a Z-axis pen, mm either side of the work origin.
+inline constexpr double kMaxGcodeZMm = 1000;
+
 }  // namespace hlr

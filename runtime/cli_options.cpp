@@ -28,7 +28,8 @@ po::options_description visible_options() {
   po::options_description o("options");
   o.add_options()                                                //
       ("output,o", po::value<std::string>()->value_name("OUT"),  //
-       "output file: .pdf (one page per frame), .svg, .png, .hpgl (one frame per file) or .json; {frame:04} "
+       "output file: .pdf (one page per frame), .svg, .png, .hpgl, .gcode (one frame per file) or .json; "
+       "{frame:04} "
        "in the name writes one file per frame")  //
       ("camera", po::value<std::string>()->value_name("NAME"),
        "camera to draw with (default: the last declared)")  //
@@ -62,8 +63,8 @@ po::options_description visible_options() {
       ("line-width", po::value<std::string>()->value_name("MM"),
        "pen width on PDF/SVG/PNG (default 0.25)")  //
       ("plotter", po::value<std::string>()->value_name("NAME"),
-       "HPGL plotter profile: generic (default), hp7475a, hp7440a, hp7550, roland-dxy, or one the script "
-       "declares")  //
+       "HPGL plotter profile: generic (default), hp7475a, hp7440a, hp7550, roland-dxy; G-code (.gcode): "
+       "grbl-servo (default), grbl-z; or one the script declares")  //
       ("step", po::value<std::string>()->value_name("MM"),
        "step of the incremental plotter tape (.steps; default 0.1 mm)")  //
       ("plain", "no frame border or caption")                            //
@@ -73,8 +74,9 @@ po::options_description visible_options() {
        "named")  //
       ("text", po::value<std::string>()->value_name("stroke|outline"),
        "the caption in single-stroke letters planned with the drawing (the default on HPGL, G-code and "
-       "plotter SVG) or as a font's outlines (the default on PDF, SVG, PNG and JSON)")                    //
-      ("clip", "cut strokes at the plotter's reach (HPGL) or the page (plotter SVG) instead of failing")  //
+       "plotter SVG) or as a font's outlines (the default on PDF, SVG, PNG and JSON)")  //
+      ("clip",
+       "cut strokes at the plotter's reach (HPGL) or the page (G-code, plotter SVG) instead of failing")  //
       ("hpgl-moves", po::value<std::string>()->value_name("relative|absolute"),
        "HPGL moves (default: the profile's)")  //
       ("pen-order", po::value<std::string>()->value_name("none|greedy|optimized"),
@@ -105,6 +107,7 @@ constexpr const char* kExamples =
     "  hlrscript scene.hls -o scene.svg --svg plotter    # layers per pen for AxiDraw, vpype, Inkscape\n"
     "  hlrscript scene.hls -o scene.hpgl --plotter hp7475a --paper A4   # for an HP 7475A\n"
     "  hlrscript landing.hls -o 'f-{frame:03}.hpgl'      # one plotter file per frame\n"
+    "  hlrscript scene.hls -o scene.gcode --plotter grbl-z   # G-code for a GRBL machine, pen on Z\n"
     "  hlrscript landing.hls -o 'f-{frame:04}.pdf' --frames 0-99 --jobs 2\n"
     "  hlrscript landing.hls -o 'f-{frame:04}.pdf' --shard 3/8    # job 3 of 8: frames 2, 10, 18, ...\n"
     "  sbatch --array=1-8 --wrap \"hlrscript landing.hls -o 'f-{frame:04}.pdf' --shard auto\"  # Slurm\n"
@@ -274,7 +277,7 @@ bool parse_access_options(const po::variables_map& vm, AccessOptions& a, std::st
 
 std::string usage_text() {
   std::ostringstream s;
-  s << "usage: hlrscript FILE.hls [-o OUT.pdf|.svg|.png|.hpgl|.json] [--camera NAME] [--frames A-B]\n"
+  s << "usage: hlrscript FILE.hls [-o OUT.pdf|.svg|.png|.hpgl|.gcode|.json] [--camera NAME] [--frames A-B]\n"
        "                          [--shard K/N] [--jobs N] [--hidden off|dashed] [--stats]\n"
        "                          [--paper SIZE] [--portrait] [--margin MM] [--scale MM] [--dpi N]\n"
        "                          [--plotter NAME] [--clip] [--pen-order none|greedy|optimized]\n"

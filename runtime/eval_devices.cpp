@@ -10,6 +10,8 @@
 #include <string_view>
 #include <vector>
 
+#include "core/device/atomic_file.hpp"
+#include "core/device/gcode_profile.hpp"
 #include "core/device/hpgl_profile.hpp"
 #include "core/device/pen_style.hpp"
 #include "core/format_number.hpp"
@@ -158,7 +160,116 @@ std::string plotter_hint() {
          ", moves: \"relative\" or \"absolute\", max_pairs: coordinate pairs per PD (1 to " +
          std::to_string(kMaxPairsPerPd) +
          "), newline: true or false, pen_speed and travel_speed: mm/s above 0, lift_time: seconds from 0, "
-         "info: a string";
+         "info: a string (a G-code base, " +
+         gcode_profile_list() + ", takes other keys)";
+}
+
+// ---- G-code plotters --------------------------------------------------------------------------------
+
+std::string gcode_plotter_hint(GcodePenMode mode) {
+  const std::string feeds =
+      format_for_message(kMinGcodeFeedMmMin) + " to " + format_for_message(kMaxGcodeFeedMmMin) + " mm/min";
+  const std::string pen =
+      mode == GcodePenMode::Servo
+          ? "up: and down: the servo's spindle S values (0 to " + format_for_message(kMaxGcodeSpindle) + ")"
+          : "z_up: and z_down: the pen's Z in mm (up above down), z_feed: the pen-down Z "
+            "feed (" +
+                feeds + ")";
+  return "the keys of a G-code plotter are base: " + gcode_profile_list() +
+         " (HPGL bases take other keys), " + pen + ", feed: the drawing feed and travel: the travel feed (" +
+         feeds +
+         "), dwell: seconds to wait after each pen move (dwell_down: and dwell_up: for one of them; 0 to " +
+         format_for_message(kMaxGcodeDwellS) + "), width: and height: the work area in mm, origin: " +
+         "\"bottom-left\" or \"top-left\", pens: 1 to " + std::to_string(kMaxPen) + ", info: a string";
+}
+
+std::vector<OptionSpec> gcode_plotter_keys(GcodePenMode mode) {
+  // Built by push_back: GCC 12 warns falsely (array-bounds) about vector::insert of an initializer list.
+  const bool servo = mode == GcodePenMode::Servo;
+  std::vector<OptionSpec> keys;
+  const auto add = [&](std::string_view name, ValueKind kind) { keys.push_back({name, kind}); };
+  add("base", ValueKind::String);
+  add(servo ? "up" : "z_up", ValueKind::Number);
+  add(servo ? "down" : "z_down", ValueKind::Number);
+  if (!servo) add("z_feed", ValueKind::Number);
+  for (const std::string_view name : {"feed", "travel", "dwell", "dwell_down", "dwell_up", "width", "height"})
+    add(name, ValueKind::Number);
+  add("origin", ValueKind::String);
+  add("pens", ValueKind::Number);
+  add("info", ValueKind::String);
+  return keys;
+}
+
+// The G-code profile a `base:` entry names, when it names one (evaluated here only to choose the key
+// list; check_options evaluates it again and reports anything wrong with it).
+template <typename Eval>
+std::optional<GcodeProfile> gcode_base(const std::vector<lang::Argument>& entries, Eval&& eval) {
+  for (const lang::Argument& arg : entries)
+    if (arg.label && arg.label->text == "base") {
+      const Value v = eval(*arg.value);
+      return v.is(ValueKind::String) ? gcode_profile_by_name(v.as_string()) : std::nullopt;
+    }
+  return std::nullopt;
+}
+
+// `plotter NAME { base: "grbl-servo", ... }`: the base's profile with the given keys applied.
+GcodeProfile gcode_plotter(const std::string& name, GcodeProfile profile, const GivenOptions& given,
+                           const OptionList& list, const lang::SourceSpan& name_span) {
+  profile.info = "declared in the script, based on " + profile.name;  // the base's info describes the base
+  profile.name = name;
+  const bool servo = profile.pen_mode == GcodePenMode::Servo;
+  const std::string feeds = "from " + format_for_message(kMinGcodeFeedMmMin) + " to " +
+                            format_for_message(kMaxGcodeFeedMmMin) + " mm/min";
+  auto feed = [&](const GivenOption& o) {
+    return number_in(
+        o, list, [](double x) { return x >= kMinGcodeFeedMmMin && x <= kMaxGcodeFeedMmMin; }, feeds);
+  };
+  auto dwell = [&](const GivenOption& o) {
+    return number_in(
+        o, list, [](double x) { return x >= 0 && x <= kMaxGcodeDwellS; },
+        "from 0 to " + format_for_message(kMaxGcodeDwellS) + " seconds");
+  };
+  auto position = [&](const GivenOption& o) {
+    if (servo)
+      return number_in(
+          o, list, [](double x) { return x >= 0 && x <= kMaxGcodeSpindle; },
+          "an S value from 0 to " + format_for_message(kMaxGcodeSpindle));
+    return number_in(
+        o, list, [](double x) { return std::fabs(x) <= kMaxGcodeZMm; },
+        "from " + format_for_message(-kMaxGcodeZMm) + " to " + format_for_message(kMaxGcodeZMm) + " mm");
+  };
+  const GivenOption* up = find(given, servo ? "up" : "z_up");
+  const GivenOption* down = find(given, servo ? "down" : "z_down");
+  if (up) profile.pen_up = position(*up);
+  if (down) profile.pen_down = position(*down);
+  if (const GivenOption* o = find(given, "z_feed")) profile.z_feed_mm_min = feed(*o);
+  if (const GivenOption* o = find(given, "feed")) profile.draw_feed_mm_min = feed(*o);
+  if (const GivenOption* o = find(given, "travel")) profile.travel_feed_mm_min = feed(*o);
+  if (const GivenOption* o = find(given, "dwell"))
+    profile.pen_down_dwell_s = profile.pen_up_dwell_s = dwell(*o);
+  if (const GivenOption* o = find(given, "dwell_down")) profile.pen_down_dwell_s = dwell(*o);
+  if (const GivenOption* o = find(given, "dwell_up")) profile.pen_up_dwell_s = dwell(*o);
+  auto side_ok = [](double x) { return x > 0 && x <= kMaxPaperSideMm; };
+  const std::string sides = "above 0 and at most " + format_for_message(kMaxPaperSideMm) + " mm";
+  if (const GivenOption* o = find(given, "width")) profile.width_mm = number_in(*o, list, side_ok, sides);
+  if (const GivenOption* o = find(given, "height")) profile.height_mm = number_in(*o, list, side_ok, sides);
+  if (const GivenOption* o = find(given, "origin")) {
+    const std::string& origin = o->value.as_string();
+    if (origin != "bottom-left" && origin != "top-left")
+      fail(o->span, list.who + "key 'origin' must be \"bottom-left\" or \"top-left\", got \"" + origin + "\"",
+           list.hint);
+    profile.origin = origin == "bottom-left" ? GcodeOrigin::BottomLeft : GcodeOrigin::TopLeft;
+  }
+  if (const GivenOption* o = find(given, "pens"))
+    profile.pen_count = static_cast<int>(number_in(
+        *o, list, [](double x) { return x >= 1 && x <= kMaxPen && whole(x); }, pen_numbers()));
+  if (const GivenOption* o = find(given, "info")) profile.info = o->value.as_string();
+  try {  // what no single key decides: up and down apart
+    check_gcode_profile(profile);
+  } catch (const DeviceError& e) {
+    fail(down ? down->span : up ? up->span : name_span, e.what(), list.hint);
+  }
+  return profile;
 }
 
 }  // namespace
@@ -271,10 +382,11 @@ void Evaluator::exec_pen(const lang::PenStmt& pen, const lang::Stmt& stmt, const
 void Evaluator::exec_plotter(const lang::PlotterStmt& plotter, const lang::Stmt& stmt,
                              const ScopePtr& scope) {
   const std::string& name = plotter.name.text;
-  if (hpgl_profile_by_name(name))
+  if (hpgl_profile_by_name(name) || gcode_profile_by_name(name))
     fail(plotter.name.span, "'" + name + "' is the name of a built-in plotter profile",
          "give yours another name and start from the built-in one: 'plotter my_" + name + " { base: \"" +
-             name + "\", ... }'; or use it as it is: 'output \"plot.hpgl\" plotter " + name + "'");
+             name + "\", ... }'; or use it as it is: 'output \"plot." +
+             (gcode_profile_by_name(name) ? "gcode" : "hpgl") + "\" plotter " + name + "'");
   for (const PlotterSetting& p : out_.plotters)
     if (p.profile.name == name) {
       lang::Diagnostic d;
@@ -284,6 +396,18 @@ void Evaluator::exec_plotter(const lang::PlotterStmt& plotter, const lang::Stmt&
       d.notes.push_back({p.span, "the first 'plotter " + name + "' is here"});
       throw EvalError(std::move(d));
     }
+  const auto evaluate = [&](const lang::Expr& e) { return eval(e, scope); };
+  if (std::optional<GcodeProfile> base = gcode_base(plotter.entries, evaluate)) {
+    const OptionList list{"plotter '" + name + "': ", "key", "feed: 3000", gcode_plotter_hint(base->pen_mode),
+                          gcode_plotter_keys(base->pen_mode)};
+    const GivenOptions given = check_options(plotter.entries, list, evaluate);
+    PlotterSetting setting;
+    setting.profile.name = name;
+    setting.span = stmt.span;
+    setting.gcode = gcode_plotter(name, std::move(*base), given, list, plotter.name.span);
+    out_.plotters.push_back(std::move(setting));
+    return;
+  }
   const OptionList list{"plotter '" + name + "': ",
                         "key",
                         "pens: 6",
@@ -309,9 +433,11 @@ void Evaluator::exec_plotter(const lang::PlotterStmt& plotter, const lang::Stmt&
     if (!found) {
       std::vector<std::string> names;
       for (const HpglProfile& p : builtin_hpgl_profiles()) names.push_back(p.name);
+      for (const GcodeProfile& p : builtin_gcode_profiles()) names.push_back(p.name);
       const std::string guess = did_you_mean(base->value.as_string(), names);
       fail(base->span, list.who + "unknown base profile \"" + base->value.as_string() + "\"",
-           (guess.empty() ? "" : guess + " ") + "the built-in profiles are " + hpgl_profile_list());
+           (guess.empty() ? "" : guess + " ") + "the built-in profiles are " + hpgl_profile_list() +
+               " (HPGL) and " + gcode_profile_list() + " (G-code)");
     }
     profile = *found;
   } else if (std::optional<HpglProfile> generic = hpgl_profile_by_name("generic")) {
@@ -353,7 +479,7 @@ void Evaluator::exec_plotter(const lang::PlotterStmt& plotter, const lang::Stmt&
     profile.speeds.lift_s = number_in(
         *o, list, [](double x) { return x >= 0; }, "0 or more seconds");
   if (const GivenOption* o = find(given, "info")) profile.info = o->value.as_string();
-  out_.plotters.push_back({std::move(profile), stmt.span});
+  out_.plotters.push_back({std::move(profile), stmt.span, std::nullopt});
 }
 
 }  // namespace hlr::runtime

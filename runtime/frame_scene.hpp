@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "core/camera/camera.hpp"
+#include "core/device/gcode_profile.hpp"
 #include "core/device/hpgl_profile.hpp"
 #include "core/device/page_layout.hpp"
 #include "core/hlr/scene.hpp"
@@ -58,6 +59,9 @@ struct PenSetting {  // pen N (colour: "red", width: 0.35)
 struct PlotterSetting {  // plotter NAME { base: "hp7475a", unit: 0.025, pens: 6, ... }
   HpglProfile profile;   // profile.name == NAME
   lang::SourceSpan span;
+  // A G-code plotter (its base is a G-code profile: `base: "grbl-servo"`): then this is the profile and
+  // `profile` above holds only the name.
+  std::optional<GcodeProfile> gcode;
 };
 
 struct FrameScene {

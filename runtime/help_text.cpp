@@ -32,14 +32,14 @@ const StatementHelp kStatements[] = {
     {"animate", "animate frames N [fps F]",
      "Makes the script a sequence: it runs once per frame with frame, t and time bound."},
     {"output", "output \"name-{frame:03}.pdf\" [paper SIZE ...] [plotter NAME]",
-     "Where the drawing goes (.pdf .svg .png .hpgl .steps .json); -o overrides it."},
+     "Where the drawing goes (.pdf .svg .png .hpgl .gcode .steps .json); -o overrides it."},
     {"paper", "paper SIZE [landscape|portrait] [(margin: MM, scale: MM_PER_UNIT)]",
      "The page: A4, A3, letter, ... or custom (width: W, height: H)."},
     {"style", "style hidden dashed|off [pen N]", "Draws hidden lines dashed, or leaves them out."},
     {"include", "include \"file.hls\"  |  include \"std/NAME.hls\"",
      "Runs another script in place, once; std/ names the library modules."},
     {"pen", "pen N (colour: \"red\", width: 0.35)", "Sets a pen's colour and width for every device."},
-    {"plotter", "plotter NAME { KEY: EXPR ... }", "Describes a pen plotter for HPGL output."},
+    {"plotter", "plotter NAME { KEY: EXPR ... }", "Describes a pen plotter for HPGL or G-code output."},
 };
 
 const BuiltinFunction* builtin_function(const std::string& name) {

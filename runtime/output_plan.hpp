@@ -51,19 +51,19 @@ std::vector<OutputTarget> plan_outputs(const std::optional<std::string>& cli_pat
 
 // Device settings from the command line; each overrides the script's setting when given.
 struct DeviceOptions {
-  std::optional<std::string> paper;     // --paper A3 | 420x297
-  std::optional<bool> landscape;        // --landscape / --portrait
-  std::optional<double> margin_mm;      // --margin
-  std::optional<double> mm_per_unit;    // --scale: 1 picture unit = N mm instead of fit-to-page
-  double dpi = 150;                     // --dpi (PNG)
-  bool decorations = true;              // --plain: no frame border or caption
-  double step_mm = 0.1;                 // --step: the incremental plotter's step (.steps)
-  std::optional<double> line_width_mm;  // --line-width: every pen's width (cairo devices)
-  std::optional<std::string> plotter;   // --plotter NAME (HPGL profile)
-  bool clip = false;                    // --clip: cut HPGL at the plotter's reach, plotter SVG at the page
-  std::optional<bool> text_strokes;     // --text stroke|outline (default: stroke on plotters)
-  std::optional<bool> plotter_svg;      // --svg plotter|document (default: plotter when one is named)
-  std::optional<bool> relative;         // --hpgl-moves relative|absolute
+  std::optional<std::string> paper;          // --paper A3 | 420x297
+  std::optional<bool> landscape;             // --landscape / --portrait
+  std::optional<double> margin_mm;           // --margin
+  std::optional<double> mm_per_unit;         // --scale: 1 picture unit = N mm instead of fit-to-page
+  double dpi = 150;                          // --dpi (PNG)
+  bool decorations = true;                   // --plain: no frame border or caption
+  double step_mm = 0.1;                      // --step: the incremental plotter's step (.steps)
+  std::optional<double> line_width_mm;       // --line-width: every pen's width (cairo devices)
+  std::optional<std::string> plotter;        // --plotter NAME (HPGL or G-code profile)
+  bool clip = false;                         // --clip: cut HPGL at the reach, G-code, plotter SVG at the page
+  std::optional<bool> text_strokes;          // --text stroke|outline (default: stroke on plotters)
+  std::optional<bool> plotter_svg;           // --svg plotter|document (default: plotter when one is named)
+  std::optional<bool> relative;              // --hpgl-moves relative|absolute
   PenOrder pen_order = PenOrder::Optimized;  // --pen-order
   double plan_budget_ms = 200;               // --plan-budget (per frame, Optimized only)
   std::string creation_date;                 // PDF metadata: SOURCE_DATE_EPOCH when set, else now

@@ -54,19 +54,85 @@ PageSpec page_spec_for(const FrameScene& scene, const DeviceOptions& d) {
   return spec;
 }
 
+// ---- G-code plotters (and the check that an output gets a plotter of its own kind) ----------------------
+
+// A plotter named for an output of the other kind (an HPGL profile for a .gcode file, or the reverse):
+// an error at the name, unless the name comes from the script's output statement and -o chose the file
+// (then the script's plotter belongs to the script's own output, and the default is used).
+void plotter_of_other_kind(const FrameScene& scene, bool from_cli, bool output_from_cli,
+                           const std::string& name, const char* kind, const char* wanted_kind,
+                           const std::string& choices) {
+  if (!from_cli && output_from_cli) return;
+  const std::string message =
+      "plotter '" + name + "' is " + kind + " profile, but the output is " + wanted_kind;
+  const std::string hint = std::string(wanted_kind) + " plotters: " + choices;
+  if (!from_cli && scene.output && scene.output->plotter_span)
+    fail(*scene.output->plotter_span, message, hint);
+  throw RunError((from_cli ? "--plotter: " : "") + message, hint, 64);
+}
+
+std::string declared_gcode_plotters(const FrameScene& scene, bool gcode) {
+  std::string out;
+  for (const PlotterSetting& p : scene.plotters)
+    if (p.gcode.has_value() == gcode) out += ", " + p.profile.name;
+  return out;
+}
+
+// The G-code profile: --plotter, else the script's `output ... plotter NAME`, else grbl-servo; declared
+// plotters first, then the built-in ones, as for HPGL.
+GcodeProfile gcode_plotter_for(const FrameScene& scene, const RunSettings& run) {
+  const DeviceOptions& d = run.device;
+  const bool from_cli = d.plotter.has_value();
+  const std::optional<std::string> wanted = from_cli       ? d.plotter
+                                            : scene.output ? scene.output->plotter
+                                                           : std::nullopt;
+  const GcodeProfile standard = *gcode_profile_by_name("grbl-servo");
+  if (!wanted) return standard;
+  const std::string choices = gcode_profile_list() + declared_gcode_plotters(scene, true) +
+                              " (or declare one: plotter NAME { base: \"grbl-servo\", ... })";
+  for (const PlotterSetting& p : scene.plotters)
+    if (p.profile.name == *wanted) {
+      if (p.gcode) return *p.gcode;
+      plotter_of_other_kind(scene, from_cli, run.output.has_value(), *wanted, "an HPGL", "G-code", choices);
+      return standard;
+    }
+  if (std::optional<GcodeProfile> builtin = gcode_profile_by_name(*wanted)) return *builtin;
+  if (hpgl_profile_by_name(*wanted)) {
+    plotter_of_other_kind(scene, from_cli, run.output.has_value(), *wanted, "an HPGL", "G-code", choices);
+    return standard;
+  }
+  const std::string message = "unknown plotter '" + *wanted + "'";
+  const std::string hint = "G-code plotters: " + choices;
+  if (!from_cli && scene.output && scene.output->plotter_span)
+    fail(*scene.output->plotter_span, message, hint);
+  throw RunError((from_cli ? "--plotter: " : "") + message, hint, 64);
+}
+
+// ---- HPGL plotters -------------------------------------------------------------------------------------
+
 // The HPGL profile: --plotter, else the script's `output ... plotter NAME`, else the generic HP-GL
 // profile. Names are looked up among the script's declared plotters first, then the built-in ones.
-HpglProfile plotter_for(const FrameScene& scene, const DeviceOptions& d) {
+HpglProfile plotter_for(const FrameScene& scene, const DeviceOptions& d, bool output_from_cli) {
   const bool from_cli = d.plotter.has_value();
   const std::optional<std::string> wanted = from_cli       ? d.plotter
                                             : scene.output ? scene.output->plotter
                                                            : std::nullopt;
   if (!wanted) return *hpgl_profile_by_name("generic");
+  const std::string hpgl_choices = hpgl_profile_list() + declared_gcode_plotters(scene, false);
   for (const PlotterSetting& p : scene.plotters)
-    if (p.profile.name == *wanted) return p.profile;
+    if (p.profile.name == *wanted) {
+      if (!p.gcode) return p.profile;
+      plotter_of_other_kind(scene, from_cli, output_from_cli, *wanted, "a G-code", "HPGL", hpgl_choices);
+      return *hpgl_profile_by_name("generic");
+    }
   if (std::optional<HpglProfile> builtin = hpgl_profile_by_name(*wanted)) return *builtin;
+  if (gcode_profile_by_name(*wanted)) {
+    plotter_of_other_kind(scene, from_cli, output_from_cli, *wanted, "a G-code", "HPGL", hpgl_choices);
+    return *hpgl_profile_by_name("generic");
+  }
   std::string declared;
-  for (const PlotterSetting& p : scene.plotters) declared += ", " + p.profile.name;
+  for (const PlotterSetting& p : scene.plotters)
+    if (!p.gcode) declared += ", " + p.profile.name;
   const std::string message = "unknown plotter '" + *wanted + "'";
   const std::string hint = "plotters: " + hpgl_profile_list() + declared +
                            " (or declare one: plotter NAME { base: \"hp7475a\", ... })";
@@ -117,7 +183,7 @@ std::shared_ptr<const Device> device_for(DeviceKind kind, const FrameScene& scen
       return make_cairo_device(cairo);
     }
     case DeviceKind::Hpgl: {
-      HpglProfile profile = plotter_for(scene, d);
+      HpglProfile profile = plotter_for(scene, d, run.output.has_value());
       if (d.relative) profile.relative = *d.relative;
       HpglOptions hpgl;
       hpgl.clip = d.clip;
@@ -127,6 +193,11 @@ std::shared_ptr<const Device> device_for(DeviceKind kind, const FrameScene& scen
       StepOptions steps;
       steps.step_mm = d.step_mm;
       return make_step_device(steps);
+    }
+    case DeviceKind::Gcode: {
+      GcodeOptions gcode;
+      gcode.clip = d.clip;
+      return make_gcode_device(gcode_plotter_for(scene, run), gcode);
     }
     case DeviceKind::Json: {
       JsonOptions json;

@@ -75,12 +75,13 @@ class Device {
   virtual std::unique_ptr<DeviceFile> open(const std::filesystem::path& path) const = 0;
 };
 
-// The file types, by extension (any case): .pdf .svg .png .hpgl/.plt/.hpg .steps .json.
-enum class DeviceKind { Pdf, Svg, Png, Hpgl, Steps, Json };
+// The file types, by extension (any case): .pdf .svg .png .hpgl/.plt/.hpg .steps .json, and G-code
+// .gcode/.nc/.ngc.
+enum class DeviceKind { Pdf, Svg, Png, Hpgl, Steps, Json, Gcode };
 std::optional<DeviceKind> device_kind_for(const std::filesystem::path& path);
 const char* device_kind_name(DeviceKind kind);  // "PDF", "SVG", ..., "plotter-steps", "JSON"
 bool one_frame_per_file(DeviceKind kind);
-// "pdf, svg, png, hpgl (or .plt), steps, json": for messages.
+// "pdf, svg, png, hpgl (or .plt), steps, json, gcode (or .nc)": for messages.
 const char* supported_extensions();
 
 }  // namespace hlr

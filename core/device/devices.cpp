@@ -24,6 +24,7 @@ std::optional<DeviceKind> device_kind_for(const fs::path& path) {
   if (ext == ".hpgl" || ext == ".plt" || ext == ".hpg") return DeviceKind::Hpgl;
   if (ext == ".steps") return DeviceKind::Steps;
   if (ext == ".json") return DeviceKind::Json;
+  if (ext == ".gcode" || ext == ".nc" || ext == ".ngc") return DeviceKind::Gcode;
   return std::nullopt;
 }
 
@@ -41,13 +42,15 @@ const char* device_kind_name(DeviceKind kind) {
       return "plotter-steps";
     case DeviceKind::Json:
       return "JSON";
+    case DeviceKind::Gcode:
+      return "G-code";
   }
   return "?";
 }
 
 bool one_frame_per_file(DeviceKind kind) { return kind != DeviceKind::Pdf && kind != DeviceKind::Json; }
 
-const char* supported_extensions() { return "pdf, svg, png, hpgl (or .plt), steps, json"; }
+const char* supported_extensions() { return "pdf, svg, png, hpgl (or .plt), steps, json, gcode (or .nc)"; }
 
 namespace {
 
@@ -256,8 +259,34 @@ class JsonDevice : public Device {
   JsonOptions o_;
 };
 
+// ---- G-code ----------------------------------------------------------------------------------------
+
+class GcodeDevice : public OneFrameDevice {
+ public:
+  GcodeDevice(GcodeProfile profile, GcodeOptions options) : profile_(std::move(profile)), o_(options) {
+    check_gcode_profile(profile_);
+  }
+  const char* name() const override { return "G-code"; }
+  DevicePlanning planning(double w, double h) const override {
+    DevicePlanning p;
+    p.grid_mm = kGcodeGridMm;
+    p.speeds = gcode_speeds(profile_);
+    p.home = gcode_home_on_page(profile_, w, h);  // throws for a page larger than the work area
+    p.text_as_strokes = true;
+    return p;
+  }
+  std::string page_bytes(const PlotPage& page) const override { return to_gcode(page, profile_, o_); }
+
+ private:
+  GcodeProfile profile_;
+  GcodeOptions o_;
+};
+
 }  // namespace
 
+std::unique_ptr<Device> make_gcode_device(const GcodeProfile& profile, const GcodeOptions& options) {
+  return std::make_unique<GcodeDevice>(profile, options);
+}
 std::unique_ptr<Device> make_cairo_device(const CairoOptions& options) {
   if (options.format == CairoFormat::Pdf) return std::make_unique<PdfDevice>(pdf_options(options));
   return std::make_unique<CairoDevice>(options);

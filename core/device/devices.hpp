@@ -5,6 +5,7 @@
 
 #include "core/device/cairo_device.hpp"
 #include "core/device/device.hpp"
+#include "core/device/gcode_device.hpp"
 #include "core/device/hpgl_device.hpp"
 #include "core/device/json_device.hpp"
 #include "core/device/plotter_svg.hpp"
@@ -25,5 +26,8 @@ std::unique_ptr<Device> make_hpgl_device(const HpglProfile& profile, const HpglO
 std::unique_ptr<Device> make_step_device(const StepOptions& options = {});
 // hlrscript.lines/1, any number of frames; planned as the cairo devices are.
 std::unique_ptr<Device> make_json_device(const JsonOptions& options);
+// G-code for a GRBL pen plotter `profile`: planned on kGcodeGridMm from the machine's origin on the page,
+// with the profile's feeds and dwells for the time estimate.
+std::unique_ptr<Device> make_gcode_device(const GcodeProfile& profile, const GcodeOptions& options = {});
 
 }  // namespace hlr

@@ -1,0 +1,279 @@
+#!/usr/bin/env python3
+"""The G-code device against an independent reader, on every example.
+
+    gcode_examples.py HLRSCRIPT EXAMPLES_DIR WORK_DIR EXAMPLE.hls...
+
+For each example (its first frame only, to stay quick) hlrscript writes G-code for the grbl-servo profile
+and hlrscript.lines/1 JSON. A small G-code interpreter written here, knowing nothing of the device's code,
+replays the program (G21, G90, G0, G1, G4, M0, M2, M3 S and Z pen moves) and checks that
+  - every move stays inside the profile's work area,
+  - the pen state is right: no G0 with the pen down, no G1 in X/Y with the pen up, M0 and M2 with the
+    pen up, a feed set before the first G1, and the program ends at the origin with M2,
+  - the segments drawn, with their pens, are the JSON strokes' segments mapped by the origin corner
+    (bottom-left: machine (x, page height - y)), within 0.002 mm.
+Both files come from the same pen plan settings (the 0.025 mm grid), so the same segments are drawn; the
+order differs (G-code starts from the machine's origin), so they are compared as multisets.
+A few examples also run with grbl-z, and one small script with a declared top-left plotter.
+"""
+import json
+import math
+import os
+import re
+import subprocess
+import sys
+from collections import Counter
+
+TOL = 0.002
+GRID = 0.025  # the planning grid: both files' points lie on it, so keys built from it are stable
+
+# The built-in profiles' numbers as documented (core/device/gcode_profile.cpp, LANGUAGE_SPEC.md).
+PROFILES = {
+    "grbl-servo": {"mode": "servo", "up": 30.0, "down": 60.0, "w": 420.0, "h": 297.0, "origin": "bottom-left"},
+    "grbl-z": {"mode": "z", "up": 5.0, "down": 0.0, "w": 420.0, "h": 297.0, "origin": "bottom-left"},
+}
+
+
+class GcodeError(Exception):
+    pass
+
+
+WORD = re.compile(r"([A-Z])([-+]?\d+(?:\.\d+)?)")
+
+
+def replay(text, profile):
+    """The drawn segments [(pen, (x0, y0), (x1, y1))] of a G-code program, checking it on the way."""
+    pen_up = None  # unknown until the program sets it
+    pen = 1  # the program starts with pen 1 in the holder
+    wanted_pen = None  # from the last "(change to pen N, then resume)" comment
+    units = absolute = feed_set = False
+    x = y = 0.0
+    ended = False
+    segments = []
+    w, h = profile["w"], profile["h"]
+    for number, raw in enumerate(text.split("\n"), 1):
+        where = f"line {number}: {raw!r}"
+        if ended and raw.strip():
+            raise GcodeError(f"{where}: text after M2")
+        comments = re.findall(r"\(([^()]*)\)", raw)
+        code = re.sub(r"\([^()]*\)", "", raw).strip()
+        if "(" in code or ")" in code:
+            raise GcodeError(f"{where}: unbalanced comment")
+        for c in comments:
+            m = re.fullmatch(r"change to pen (\d+), then resume", c)
+            if m:
+                wanted_pen = int(m.group(1))
+        if not code:
+            continue
+        words = WORD.findall(code)
+        if "".join(a + b for a, b in words) != code.replace(" ", ""):
+            raise GcodeError(f"{where}: not a sequence of G-code words")
+        letters = [a for a, _ in words]
+        if len(set(letters)) != len(letters):
+            raise GcodeError(f"{where}: a word given twice")
+        p = {a: float(b) for a, b in words}
+        command = words[0][0] + str(int(float(words[0][1])))
+        if command == "G21":
+            units = True
+            continue
+        if command == "G90":
+            absolute = True
+            continue
+        if not (units and absolute):
+            raise GcodeError(f"{where}: a command before G21 and G90")
+        if command == "M3":
+            if profile["mode"] != "servo" or "S" not in p:
+                raise GcodeError(f"{where}: M3 S is the servo profile's pen move")
+            if p["S"] == profile["up"]:
+                pen_up = True
+            elif p["S"] == profile["down"]:
+                pen_up = False
+            else:
+                raise GcodeError(f"{where}: S is neither the pen-up nor the pen-down value")
+        elif command in ("G0", "G1") and "Z" in p:
+            if profile["mode"] != "z" or "X" in p or "Y" in p:
+                raise GcodeError(f"{where}: a Z move must be alone, and only for a Z pen")
+            if command == "G0" and p["Z"] == profile["up"]:
+                pen_up = True
+            elif command == "G1" and p["Z"] == profile["down"] and "F" in p:
+                pen_up = False
+            else:
+                raise GcodeError(f"{where}: a Z move that is neither pen up (G0) nor pen down (G1 with F)")
+        elif command in ("G0", "G1"):
+            if "X" not in p or "Y" not in p:
+                raise GcodeError(f"{where}: a move without X and Y")
+            nx, ny = p["X"], p["Y"]
+            if not (0 <= nx <= w and 0 <= ny <= h):
+                raise GcodeError(f"{where}: outside the {w} x {h} mm work area")
+            if command == "G0":
+                if pen_up is not True:
+                    raise GcodeError(f"{where}: G0 with the pen down (or not yet lifted)")
+            else:
+                if pen_up is not False:
+                    raise GcodeError(f"{where}: G1 drawing with the pen up")
+                feed_set = feed_set or "F" in p
+                if not feed_set:
+                    raise GcodeError(f"{where}: G1 before any feed")
+                segments.append((pen, (x, y), (nx, ny)))
+            x, y = nx, ny
+        elif command == "G4":
+            if not (p.get("P", -1) > 0):
+                raise GcodeError(f"{where}: G4 needs P seconds above 0")
+        elif command == "M0":
+            if pen_up is not True or wanted_pen is None:
+                raise GcodeError(f"{where}: M0 with the pen down or without naming the next pen")
+            pen, wanted_pen = wanted_pen, None
+        elif command == "M2":
+            if pen_up is not True or (x, y) != (0.0, 0.0):
+                raise GcodeError(f"{where}: the program must end with the pen up at the origin")
+            ended = True
+        else:
+            raise GcodeError(f"{where}: unexpected command {command}")
+    if not ended:
+        raise GcodeError("the program does not end with M2")
+    return segments
+
+
+def key(pen, a, b):
+    ka = (round(a[0] / GRID), round(a[1] / GRID))
+    kb = (round(b[0] / GRID), round(b[1] / GRID))
+    return (pen,) + (ka + kb if ka <= kb else kb + ka)
+
+
+def json_segments(doc, origin):
+    page_h = doc["page"]["height_mm"]
+    frame = doc["frames"][0]
+    out = []
+    # The hidden layer (style hidden dashed) is drawn by plotters like any stroke, with its pen.
+    strokes = frame["strokes"] + frame.get("hidden_strokes", [])
+    pens = frame["stroke_pens"] + frame.get("hidden_stroke_pens", [])
+    if len(strokes) != len(pens):
+        raise GcodeError("the JSON has a pen for each stroke")
+    for pts, pen in zip(strokes, pens):
+        m = [(x, page_h - y) if origin == "bottom-left" else (x, y) for x, y in pts]
+        out += [(pen, m[i - 1], m[i]) for i in range(1, len(m))]
+    return out
+
+
+def compare(name, gcode_segs, json_segs):
+    def index(segs):
+        d = {}
+        for pen, a, b in segs:
+            if math.dist(a, b) <= TOL:  # a dot: no segment to compare
+                continue
+            d.setdefault(key(pen, a, b), []).append((a, b))
+        return d
+
+    g, j = index(gcode_segs), index(json_segs)
+    gc = Counter({k: len(v) for k, v in g.items()})
+    jc = Counter({k: len(v) for k, v in j.items()})
+    if gc != jc:
+        missing, extra = jc - gc, gc - jc
+        raise GcodeError(
+            f"{name}: drawn segments differ from the JSON strokes: {sum(missing.values())} missing "
+            f"(e.g. {list(missing)[:2]}), {sum(extra.values())} extra (e.g. {list(extra)[:2]})"
+        )
+    for k, segs in g.items():  # same keys: check the coordinates themselves within the tolerance
+        for (a, b), (c, d) in zip(sorted(segs), sorted(sorted(s) for s in j[k])):
+            ends = sorted([a, b])
+            if max(math.dist(ends[0], c), math.dist(ends[1], d)) > TOL:
+                raise GcodeError(f"{name}: segment {a}-{b} is more than {TOL} mm from the JSON's {c}-{d}")
+    return sum(gc.values())
+
+
+def run(hlrscript, args):
+    r = subprocess.run([hlrscript] + args, capture_output=True, text=True, timeout=300)
+    if r.returncode != 0:
+        raise GcodeError(f"hlrscript {' '.join(args)} failed ({r.returncode}): {r.stderr.strip()}")
+
+
+def check(hlrscript, script, work, name, profile_name, profile, extra=()):
+    gcode = os.path.join(work, name + ".gcode")
+    js = os.path.join(work, name + ".json")
+    # --plain: the drawing itself. The caption's letters are planned from each device's home, and where
+    # strokes of neighbouring letters overlap the two plans may split them differently; caption() checks them.
+    common = [script, "--frames", "0", "--plain"] + list(extra)
+    run(hlrscript, common + ["-o", gcode] + (["--plotter", profile_name] if profile_name else []))
+    run(hlrscript, common + ["-o", js])
+    with open(gcode) as f:
+        text = f.read()
+    with open(js) as f:
+        doc = json.load(f)
+    if doc["format"] != "hlrscript.lines/1":
+        raise GcodeError(f"{name}: not hlrscript.lines/1 JSON")
+    try:
+        segs = replay(text, profile)
+    except GcodeError as e:
+        raise GcodeError(f"{name}.gcode: {e}")
+    n = compare(name, segs, json_segments(doc, profile["origin"]))
+    if n == 0:
+        raise GcodeError(f"{name}: nothing drawn")
+    print(f"ok {name}: {n} segments, {profile_name or 'the declared plotter'}")
+
+
+def caption(hlrscript, script, work, profile):
+    """The caption: G-code draws it in single strokes (pen 1), in the bottom margin below the drawing, and
+    nothing else changes: every segment of the plain file is drawn again."""
+    plain, with_caption = os.path.join(work, "plain.gcode"), os.path.join(work, "caption.gcode")
+    run(hlrscript, [script, "--frames", "0", "--plain", "-o", plain])
+    run(hlrscript, [script, "--frames", "0", "-o", with_caption])
+    segs = {}
+    for path in (plain, with_caption):
+        with open(path) as f:
+            segs[path] = Counter((pen, a, b) if a <= b else (pen, b, a) for pen, a, b in replay(f.read(), profile))
+    added = segs[with_caption] - segs[plain]
+    if segs[plain] - segs[with_caption]:
+        raise GcodeError("caption: the drawing changed when the caption was added")
+    if len(added) < 20:
+        raise GcodeError(f"caption: only {len(added)} segments of letters")
+    margin = 12  # the default, bottom-left origin: the band below the drawing is y < 12 mm
+    for pen, a, b in added:
+        if pen != 1 or max(a[1], b[1]) >= margin or min(a[1], b[1]) < 0:
+            raise GcodeError(f"caption: a segment {a}-{b} in pen {pen} outside the bottom margin")
+    print(f"ok caption: {sum(added.values())} single-stroke segments in the bottom margin")
+
+
+TOP_LEFT = """plotter desk { base: "grbl-servo", origin: "top-left", width: 300, height: 220, up: 40, down: 90 }
+output "unused.gcode" plotter desk
+draw cube(1)
+draw cube(0.5) at translate(1.5, 0, 0) pen 2
+camera main = lookat(eye: (4, -5, 3), target: (0.5, 0.5, 0.5))
+"""
+
+
+def main():
+    if len(sys.argv) < 5:
+        sys.exit(__doc__)
+    hlrscript, examples, work = sys.argv[1:4]
+    os.makedirs(work, exist_ok=True)
+    failures = []
+    for i, example in enumerate(sys.argv[4:]):
+        name = example.replace("/", ".").removesuffix(".hls")
+        script = os.path.join(examples, example)
+        jobs = [(name, "grbl-servo")] + ([(name + ".z", "grbl-z")] if i < 2 else [])
+        for label, profile in jobs:
+            try:
+                check(hlrscript, script, work, label, profile, PROFILES[profile])
+            except GcodeError as e:
+                failures.append(str(e))
+                print("FAIL", e)
+    # A declared top-left plotter with two pens: y kept as on the page, one M0 pause for pen 2.
+    script = os.path.join(work, "top_left.hls")
+    with open(script, "w") as f:
+        f.write(TOP_LEFT)
+    top_left = {"mode": "servo", "up": 40.0, "down": 90.0, "w": 300.0, "h": 220.0, "origin": "top-left"}
+    try:
+        check(hlrscript, script, work, "top_left", None, top_left)
+    except GcodeError as e:
+        failures.append(str(e))
+        print("FAIL", e)
+    try:
+        caption(hlrscript, os.path.join(examples, "showcase/gear.hls"), work, PROFILES["grbl-servo"])
+    except GcodeError as e:
+        failures.append(str(e))
+        print("FAIL", e)
+    if failures:
+        sys.exit(f"{len(failures)} failure(s)")
+
+
+if __name__ == "__main__":
+    main()
