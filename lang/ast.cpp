@@ -209,6 +209,10 @@ std::string dump(const Stmt& stmt) {
           [](const PenStmt& s) {
             return "(pen " + dump(*s.number) + " (options" + arguments_text(s.options) + "))";
           },
+          [](const LabelStmt& s) {
+            return "(label " + dump(*s.text) + (s.on_page ? " at page " : " at ") + dump(*s.point) +
+                   (s.size ? " size " + dump(*s.size) : "") + pen_text(s.pen) + ")";
+          },
           [](const PlotterStmt& s) {
             return "(plotter " + s.name.text + " (entries" + arguments_text(s.entries) + "))";
           },
@@ -223,9 +227,9 @@ std::string dump(const Script& script) {
 }
 
 const char* statement_keyword(const Stmt& stmt) {
-  static constexpr const char* names[] = {"solid", "let",   "def",     "return",  "for",
-                                          "if",    "draw",  "camera",  "animate", "output",
-                                          "paper", "style", "include", "pen",     "plotter"};
+  static constexpr const char* names[] = {"solid",   "let",    "def",     "return", "for",   "if",
+                                          "draw",    "camera", "animate", "output", "paper", "style",
+                                          "include", "pen",    "plotter", "label"};
   static_assert(std::size(names) == std::variant_size_v<decltype(Stmt::node)>);
   return names[stmt.node.index()];
 }

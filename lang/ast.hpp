@@ -231,6 +231,13 @@ struct PenStmt {  // pen N (colour: "red", width: 0.35)
   ExprPtr number;
   std::vector<Argument> options;  // as written; the runtime checks them
 };
+struct LabelStmt {  // label TEXT at [page] POINT [size: MM] [pen N]
+  ExprPtr text;
+  ExprPtr point;
+  bool on_page = false;  // `at page (x, y)`: page millimetres, not a world point
+  ExprPtr size;          // null when absent
+  std::optional<PenClause> pen;
+};
 struct PlotterStmt {  // plotter NAME { KEY: EXPR ... }
   Name name;
   std::vector<Argument> entries;  // each labelled with its key, as written
@@ -239,7 +246,7 @@ struct PlotterStmt {  // plotter NAME { KEY: EXPR ... }
 struct Stmt {
   SourceSpan span;
   std::variant<SolidStmt, LetStmt, DefStmt, ReturnStmt, ForStmt, IfStmt, DrawStmt, CameraStmt, AnimateStmt,
-               OutputStmt, PaperStmt, StyleStmt, IncludeStmt, PenStmt, PlotterStmt>
+               OutputStmt, PaperStmt, StyleStmt, IncludeStmt, PenStmt, PlotterStmt, LabelStmt>
       node;
 };
 

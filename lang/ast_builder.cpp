@@ -525,6 +525,33 @@ struct action<g::plotter_stmt> {
 };
 
 template <>
+struct action<g::label_on_page> {
+  template <typename Input>
+  static void apply(const Input&, ParseState& s) {
+    s.items.emplace_back(PageMarker{});
+  }
+};
+
+template <>
+struct action<g::label_stmt> {
+  template <typename Input>
+  static void apply(const Input& in, ParseState& s) {
+    make_statement(span_of(in, s), s, [](auto it, auto end) {
+      LabelStmt label;
+      label.text = box(take<Expr>(*it++));
+      if (holds<PageMarker>(*it)) {
+        label.on_page = true;
+        ++it;
+      }
+      label.point = box(take<Expr>(*it++));
+      if (it != end && holds<PenClause>(*(end - 1))) label.pen = take<PenClause>(*--end);
+      if (it != end) label.size = box(take<Expr>(*it++));
+      return label;
+    });
+  }
+};
+
+template <>
 struct action<g::include_path> {
   template <typename Input>
   static void apply(const Input& in, ParseState& s) {

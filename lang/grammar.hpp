@@ -101,6 +101,9 @@ struct key_landscape : key< TAO_PEGTL_STRING( "landscape" ) > {};
 struct key_portrait : key< TAO_PEGTL_STRING( "portrait" ) > {};
 struct key_pen : key< TAO_PEGTL_STRING( "pen" ) > {};
 struct key_plotter : key< TAO_PEGTL_STRING( "plotter" ) > {};
+struct key_label : key< TAO_PEGTL_STRING( "label" ) > {};
+struct key_size : key< TAO_PEGTL_STRING( "size" ) > {};
+struct key_page : key< TAO_PEGTL_STRING( "page" ) > {};
 struct solid_word : sor< key_vertex, key_face, key_hole, key_line > {};
 
 struct name : seq< not_at< reserved >, identifier > {};
@@ -363,11 +366,24 @@ struct plotter_entries : seq< plotter_entry, star< sp, sor< seq< one< ',' >, sp,
 struct plotter_close : one< '}' > {};
 struct plotter_stmt : seq< key_plotter, sp, must< plotter_name >, sp, must< plotter_open >, sp, opt< plotter_entries, sp >, must< plotter_close > > {};
 
+// label TEXT at POINT [size: MM] [pen N]: TEXT in single-stroke letters, POINT (x, y, z) in the world
+// (projected and hidden as the solids are) or `page (x, y)`, millimetres from the page's top-left corner.
+struct label_text : seq< expression > {};
+struct label_at : key_at {};
+struct label_on_page : seq< key_page, at< sp, one< '(' > > > {};
+struct label_point : seq< expression > {};
+struct label_where : seq< opt< label_on_page, sp >, must< label_point > > {};
+struct label_size_value : seq< expression > {};
+struct label_size : seq< key_size, sp, one< ':' >, sp, must< label_size_value > > {};
+struct label_stmt : seq< key_label, sp, must< label_text >, sp, must< label_at >, sp, label_where,
+                         opt< sp, label_size >, opt< sp, pen_clause > > {};
+
 struct include_path : seq< string_lit > {};
 struct include_stmt : seq< key_include, sp, must< include_path > > {};
 
 struct statement : sor< solid_stmt, let_stmt, def_stmt, return_stmt, for_stmt, if_stmt, draw_stmt, camera_stmt,
-                        animate_stmt, output_stmt, paper_stmt, style_stmt, include_stmt, pen_stmt, plotter_stmt > {};
+                        animate_stmt, output_stmt, paper_stmt, style_stmt, include_stmt, pen_stmt, plotter_stmt,
+                        label_stmt > {};
 
 // ---- the script ---------------------------------------------------------------------------------
 

@@ -148,9 +148,13 @@ HLR_ERROR(plotter_next_entry, "expected 'key: value' after ',' in the plotter, a
 HLR_HINT(plotter_next_entry, "a trailing ',' is not allowed");
 HLR_ERROR(plotter_close, "expected 'key: value' or '}' in the plotter");
 HLR_HINT(plotter_close, "entries are 'key: value', separated by ',' or new lines, as in 'plotter mine { base: \"hp7475a\", pens: 6 }'");
+HLR_ERROR(label_text, "expected the text after 'label', as in 'label \"bridge\" at (0, 0, 2)'");
+HLR_ERROR(label_at, "expected 'at' and where the label goes, as in 'label \"bridge\" at (0, 0, 2)'");
+HLR_ERROR(label_point, "expected a point after 'at', as in 'label \"bridge\" at (0, 0, 2)' or 'at page (20, 15)'");
+HLR_ERROR(label_size_value, "expected the letters' height in millimetres after 'size:', as in 'size: 4'");
 HLR_ERROR(include_path, "expected a quoted file name after 'include', as in 'include \"parts.hls\"'");
 HLR_ERROR(top_statement, "expected a statement");
-HLR_HINT(top_statement, "statements start with solid, let, def, for, if, draw, camera, animate, output, paper, style, pen, plotter or include");
+HLR_HINT(top_statement, "statements start with solid, let, def, for, if, draw, camera, animate, output, paper, style, pen, plotter, label or include");
 
 // clang-format on
 

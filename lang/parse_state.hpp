@@ -38,9 +38,11 @@ struct IndexSuffix {
 struct PlotterName {
   Name name;
 };
+// `label ... at page (x, y)`: the point is on the page.
+struct PageMarker {};
 
 using Item = std::variant<Expr, Stmt, Token, Name, VertexId, Argument, Param, StringPart, CallSuffix,
-                          MemberSuffix, IndexSuffix, SolidItem, HoleLoop, Block, PenClause, PlotterName>;
+                          MemberSuffix, IndexSuffix, SolidItem, HoleLoop, Block, PenClause, PlotterName, PageMarker>;
 
 // Thrown by the control (a failed must<>) and by actions; the parser turns it into a Diagnostic.
 struct SyntaxError {

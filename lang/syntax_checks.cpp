@@ -105,6 +105,12 @@ class Checker {
     arguments(s.options);  // names and values: the runtime's
   }
   void visit(const Stmt&, const PlotterStmt& s) { arguments(s.entries); }
+  void visit(const Stmt&, const LabelStmt& s) {
+    expr(*s.text);
+    expr(*s.point);
+    if (s.size) expr(*s.size);
+    if (s.pen) expr(*s.pen->number);
+  }
 
   void arguments(const std::vector<Argument>& args) {
     for (const auto& arg : args) expr(*arg.value);

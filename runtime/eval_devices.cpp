@@ -18,6 +18,7 @@
 #include "core/limits.hpp"
 #include "runtime/eval_detail.hpp"
 #include "runtime/evaluator.hpp"
+#include "runtime/format_value.hpp"
 
 namespace hlr::runtime {
 
@@ -480,6 +481,42 @@ void Evaluator::exec_plotter(const lang::PlotterStmt& plotter, const lang::Stmt&
         *o, list, [](double x) { return x >= 0; }, "0 or more seconds");
   if (const GivenOption* o = find(given, "info")) profile.info = o->value.as_string();
   out_.plotters.push_back({std::move(profile), stmt.span, std::nullopt});
+}
+
+// ---- labels ------------------------------------------------------------------------------------------
+
+void Evaluator::exec_label(const lang::LabelStmt& label, const lang::Stmt& stmt, const ScopePtr& scope) {
+  LabelSetting setting;
+  setting.span = stmt.span;
+  setting.on_page = label.on_page;
+  const Value text = eval(*label.text, scope);
+  try {  // any value, written as str() writes it
+    setting.text = text.is(ValueKind::String) ? text.as_string() : display(text, budget_.limits().string);
+  } catch (const FormatError& e) {
+    fail(label.text->span, e.what());
+  }
+  const Value at = eval(*label.point, scope);
+  if (!at.is(ValueKind::Vector))
+    fail(label.point->span, "a label goes at a point, got " + kind_with_article(at.kind()),
+         label.on_page ? "on the page: 'at page (20, 15)', millimetres from the top-left corner"
+                       : "in the world: 'at (0, 0, 2)'; on the page: 'at page (20, 15)'");
+  const Vector3 v = at.as_vector();
+  setting.at = {v.x, v.y, v.z};
+  if (!is_finite(setting.at)) fail(label.point->span, "the label's point must be finite");
+  if (label.on_page && (v.x < 0 || v.y < 0 || v.z != 0))
+    fail(label.point->span,
+         "a page point is (x, y) in millimetres from the page's top-left corner, both 0 or more");
+  if (label.size) {
+    const Value size = eval(*label.size, scope);
+    if (!size.is(ValueKind::Number) || !(size.as_number() > 0 && size.as_number() <= kMaxLabelSizeMm))
+      fail(label.size->span,
+           "the label's size is the height of its capitals in millimetres, above 0 and at most " +
+               format_for_message(kMaxLabelSizeMm),
+           "for example: size: 4");
+    setting.size_mm = size.as_number();
+  }
+  if (label.pen) setting.pen = eval_pen_number(*label.pen->number, scope);
+  out_.labels.push_back(std::move(setting));
 }
 
 }  // namespace hlr::runtime

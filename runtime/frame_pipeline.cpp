@@ -17,6 +17,7 @@
 
 #include "core/hlr/render_frame.hpp"
 #include "runtime/eval_error.hpp"
+#include "runtime/frame_labels.hpp"
 #include "runtime/interrupt.hpp"
 #include "runtime/limits.hpp"
 
@@ -75,12 +76,42 @@ void run_frame(const Program& program, int frame, double fps, const PipelineOpti
     fail(settings.camera->span, frame_timeout_message(limits.frame_timeout_s) + " in " + stage,
          "--frame-timeout SECONDS gives each frame more time; a simpler view or scene needs less");
   };
+  try {
+    resolve_device(scene, run, settings);
+  } catch (const DeviceError& e) {  // a page the plotter does not take: at the output statement
+    throw OutputError(e.what(), settings.target);
+  }
+  job.device = settings.device;
+  settings.plot.texts = page_labels(scene.labels);
+
+  const Camera& camera = settings.camera->camera;
+  const auto render = [&](const Scene& drawn, FrameResult& result) {
+    try {
+      result = render_frame(drawn, camera, hlr);
+    } catch (const FrameTimedOut&) {
+      out_of_time("the hidden lines");
+    }
+  };
   const auto start = Clock::now();
   FrameResult result;
-  try {
-    result = render_frame(scene.scene, settings.camera->camera, hlr);
-  } catch (const FrameTimedOut&) {
-    out_of_time("the hidden lines");
+  if (!has_world_labels(scene.labels)) {
+    render(scene.scene, result);
+  } else {
+    // Labels are sized on the page, so the layout comes first: the camera's frame, or (without one) the
+    // solids' own pieces, found by a first run; the labels then go through the engine with the solids.
+    std::optional<Rect2> extent = camera.frame;
+    if (!extent) {
+      render(scene.scene, result);
+      extent = drawing_extent(std::nullopt, result.segments);
+    }
+    Scene labelled = scene.scene;  // the solids are shared, not copied
+    settings.plot.object_pens.resize(labelled.objects.size(), 1);
+    add_world_labels(scene.labels, camera, fit_rect_to_page(*extent, settings.plot.spec), labelled,
+                     settings.plot.object_pens);
+    for (std::size_t i = scene.scene.objects.size(); i < labelled.objects.size(); ++i)
+      r.object_names.push_back(labelled.objects[i].name);
+    render(labelled, result);
+    settings.plot.extent = extent;
   }
   r.render_seconds = seconds_since(start);
   // Each piece costs the plan and the device more than the engine: a runaway count stops here.
@@ -91,12 +122,6 @@ void run_frame(const Program& program, int frame, double fps, const PipelineOpti
          "draw fewer or coarser solids, or look from farther away");
   r.segments = result.segments.size();
   r.stats = result.stats;
-  try {
-    resolve_device(scene, run, settings);
-  } catch (const DeviceError& e) {  // a page the plotter does not take: at the output statement
-    throw OutputError(e.what(), settings.target);
-  }
-  job.device = settings.device;
 
   DeviceFrame frame_out;
   frame_out.frame = scene.time.frame;

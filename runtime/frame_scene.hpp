@@ -64,6 +64,19 @@ struct PlotterSetting {  // plotter NAME { base: "hp7475a", unit: 0.025, pens: 6
   std::optional<GcodeProfile> gcode;
 };
 
+// label TEXT at [page] POINT [size: MM] [pen N]: single-stroke text at a world point (drawn flat on the
+// page from where the point projects, hidden where the solids hide it) or at a page point.
+inline constexpr double kDefaultLabelSizeMm = 3.5;  // capitals' height
+inline constexpr double kMaxLabelSizeMm = 500;
+struct LabelSetting {
+  std::string text;
+  Point3 at;             // world, or page mm (x, y) when on_page
+  bool on_page = false;
+  double size_mm = kDefaultLabelSizeMm;
+  int pen = 1;
+  lang::SourceSpan span;  // the statement
+};
+
 struct FrameScene {
   FrameTime time;
   Scene scene;                       // drawn objects in draw order, names unique ("box", "box#2")
@@ -78,6 +91,7 @@ struct FrameScene {
   std::optional<lang::SourceSpan> first_draw;  // what the first draw statement draws
   std::vector<PenSetting> pens;                // pen statements, each pen number at most once
   std::vector<PlotterSetting> plotters;        // declared plotters, names unique
+  std::vector<LabelSetting> labels;            // in statement order
   std::vector<lang::Diagnostic> warnings;
   std::uint64_t steps = 0;
   std::size_t faces_built = 0;

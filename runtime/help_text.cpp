@@ -40,6 +40,8 @@ const StatementHelp kStatements[] = {
      "Runs another script in place, once; std/ names the library modules."},
     {"pen", "pen N (colour: \"red\", width: 0.35)", "Sets a pen's colour and width for every device."},
     {"plotter", "plotter NAME { KEY: EXPR ... }", "Describes a pen plotter for HPGL or G-code output."},
+    {"label", "label TEXT at POINT | at page (X, Y) [size: MM] [pen N]",
+     "Writes single-stroke text from a world point (hidden by the solids in front) or a page point in mm."},
 };
 
 const BuiltinFunction* builtin_function(const std::string& name) {

@@ -185,6 +185,12 @@ class Resolver {
                      options(s.options, scope);
                    },
                    [&](const lang::PlotterStmt& s) { options(s.entries, scope); },
+                   [&](const lang::LabelStmt& s) {
+                     expr(*s.text, scope);
+                     expr(*s.point, scope);
+                     if (s.size) expr(*s.size, scope);
+                     if (s.pen) expr(*s.pen->number, scope);
+                   },
                },
                stmt.node);
   }

@@ -23,6 +23,18 @@ int checked_pen(int pen) {
   return pen;
 }
 
+// Text strokes as pieces of one pen, visible.
+void add_strokes(const std::vector<std::vector<Point2>>& strokes, int pen, std::vector<PlotPiece>& pieces) {
+  for (const std::vector<Point2>& stroke : strokes)
+    for (std::size_t i = 1; i < stroke.size(); ++i) {
+      PlotPiece p;
+      p.a = stroke[i - 1];
+      p.b = stroke[i];
+      p.pen = pen;
+      pieces.push_back(p);
+    }
+}
+
 // The caption's strokes as pieces of pen 1: on the baseline where the printed caption sits (0.6 of the
 // margin up from the bottom edge) unless the pen cannot reach its descenders there, then raised to the
 // reach; made smaller when the band between the drawing and the reach, or the page's width, is too small.
@@ -37,13 +49,7 @@ void add_caption(const std::string& caption, const PlotPage& page, double reach,
   if (!(cap > 0.5)) return;  // no room for legible letters: no caption
   const double baseline =
       std::min(page.height_mm - 0.6 * margin, page.height_mm - reach - cap * descent_per_cap);
-  for (const std::vector<Point2>& stroke : stroke_text(caption, {left, baseline}, cap))
-    for (std::size_t i = 1; i < stroke.size(); ++i) {
-      PlotPiece p;
-      p.a = stroke[i - 1];
-      p.b = stroke[i];
-      pieces.push_back(p);
-    }
+  add_strokes(stroke_text(caption, {left, baseline}, cap), 1, pieces);
 }
 
 }  // namespace
@@ -51,7 +57,7 @@ void add_caption(const std::string& caption, const PlotPage& page, double reach,
 PagePlot plot_page(const std::vector<VisibleSegment>& segments, const std::optional<Rect2>& frame,
                    std::string caption, const PagePlotOptions& o) {
   PagePlot out;
-  out.layout = fit_to_page(frame, segments, o.spec);
+  out.layout = o.extent ? fit_rect_to_page(*o.extent, o.spec) : fit_to_page(frame, segments, o.spec);
   out.page.width_mm = o.spec.paper.width_mm;
   out.page.height_mm = o.spec.paper.height_mm;
   out.page.margin_mm = o.spec.margin_mm;
@@ -76,6 +82,8 @@ PagePlot plot_page(const std::vector<VisibleSegment>& segments, const std::optio
     p.layer = s.hidden ? StrokeLayer::Hidden : StrokeLayer::Visible;
     pieces.push_back(p);
   }
+  for (const PageText& text : o.texts)
+    add_strokes(stroke_text(text.text, text.at, text.size_mm), checked_pen(text.pen), pieces);
   if (o.caption_as_strokes && !out.page.caption.empty()) {
     add_caption(out.page.caption, out.page, o.reach_margin_mm, pieces);
     out.page.caption.clear();  // drawn: no device prints it again

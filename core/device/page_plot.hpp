@@ -14,6 +14,14 @@
 
 namespace hlr {
 
+// Single-stroke text placed on the page (a `label ... at page (x, y)`): its baseline starts at `at`.
+struct PageText {
+  std::string text;
+  Point2 at;             // page mm, top-left, y down
+  double size_mm = 3.5;  // capitals' height
+  int pen = 1;
+};
+
 struct PagePlotOptions {
   PageSpec spec;                  // paper, margins, explicit scale
   std::vector<int> object_pens;   // by VisibleSegment::object; objects past the end use pen 1
@@ -21,10 +29,14 @@ struct PagePlotOptions {
   bool include_hidden = false;    // hidden pieces are planned (and drawn) only when on
   PlanOptions plan;
   // The caption as single-stroke text (core/device/stroke_text.hpp) in pen 1, planned with the drawing,
-  // instead of a string the device prints (plotters, and --text stroke): see caption_baseline().
+  // instead of a string the device prints (plotters, and --text stroke), in the bottom margin.
   bool caption_as_strokes = false;
-  double reach_margin_mm =
-      0;  // the pen reaches no closer to the sheet's edge (DevicePlanning::min_margin_mm)
+  // The pen reaches no closer to the sheet's edge (DevicePlanning::min_margin_mm).
+  double reach_margin_mm = 0;
+  std::vector<PageText> texts;  // drawn and planned with the rest
+  // What the layout fits instead of the frame or the pieces: fixed before labels were added, so that
+  // they never move the drawing.
+  std::optional<Rect2> extent;
 };
 
 // The caption's size in stroke text: about the 10 pt of the printed caption.
