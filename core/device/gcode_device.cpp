@@ -117,7 +117,12 @@ class Program {
   void finish() {
     travel_mm_ += std::hypot(at_.x, at_.y);
     line("G0 X0.000 Y0.000");
-    line("M2");
+    // M2 also stops the spindle (GRBL's M5): a servo build's PWM drops to S0, which lifts the pen further
+    // when up is below down, and would drop it otherwise; then the program just ends.
+    if (p_.pen_mode == GcodePenMode::Servo && p_.pen_up > p_.pen_down)
+      line("(end; no M2, which would turn the servo to S0 and lower the pen)");
+    else
+      line("M2");
   }
 
   const std::string& text() const { return out_; }

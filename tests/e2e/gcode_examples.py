@@ -128,8 +128,13 @@ def replay(text, profile):
             ended = True
         else:
             raise GcodeError(f"{where}: unexpected command {command}")
-    if not ended:
+    # A servo pen whose up value is above its down value would be lowered by M2 (it stops the PWM): such
+    # a program ends with the pen up at the origin and no M2.
+    reversed_servo = profile["mode"] == "servo" and profile["up"] > profile["down"]
+    if not ended and not (reversed_servo and pen_up is True and (x, y) == (0.0, 0.0)):
         raise GcodeError("the program does not end with M2")
+    if ended and reversed_servo:
+        raise GcodeError("M2 would turn this servo to S0 and lower the pen")
     return segments
 
 
@@ -263,6 +268,14 @@ def main():
     top_left = {"mode": "servo", "up": 40.0, "down": 90.0, "w": 300.0, "h": 220.0, "origin": "top-left"}
     try:
         check(hlrscript, script, work, "top_left", None, top_left)
+    except GcodeError as e:
+        failures.append(str(e))
+        print("FAIL", e)
+    # The same with the servo turned the other way (up S90, down S40): no M2 at the end.
+    with open(script, "w") as f:
+        f.write(TOP_LEFT.replace("up: 40, down: 90", "up: 90, down: 40"))
+    try:
+        check(hlrscript, script, work, "reversed_servo", None, dict(top_left, up=90.0, down=40.0))
     except GcodeError as e:
         failures.append(str(e))
         print("FAIL", e)

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "core/device/atomic_file.hpp"
@@ -97,6 +98,17 @@ TEST(GcodeDevice, ServoProgramForOneStrokeOriginBottomLeft) {
             std::string::npos)
       << g;
   EXPECT_EQ(lines(g).front(), "(hlrscript G-code for plotter 'small': test machine)");
+}
+
+TEST(GcodeDevice, AServoTurnedTheOtherWayEndsWithoutM2) {
+  // M2 stops the spindle PWM: the servo turns to S0, below this pen's down value of 10.
+  GcodeProfile p = small_servo();
+  std::swap(p.pen_up, p.pen_down);
+  const std::string g = to_gcode(page(100, 50, {stroke({{10, 10}, {20, 10}})}), p);
+  const std::vector<std::string> c = code(g), all = lines(g);
+  EXPECT_EQ(c[2], "M3 S20");  // pen up
+  EXPECT_EQ(c.back(), "G0 X0.000 Y0.000");
+  EXPECT_EQ(all.back(), "(end; no M2, which would turn the servo to S0 and lower the pen)");
 }
 
 TEST(GcodeDevice, TopLeftOriginKeepsPageY) {
