@@ -17,6 +17,7 @@
 #include "runtime/demo_script.hpp"
 #include "runtime/eval_detail.hpp"
 #include "runtime/eval_error.hpp"
+#include "runtime/file_access.hpp"
 #include "runtime/frame_pipeline.hpp"
 #include "runtime/help_text.hpp"
 #include "runtime/interrupt.hpp"
@@ -356,7 +357,7 @@ int run_cli(int argc, const char* const argv[], std::istream& in, bool in_is_ter
       case CliOptions::Mode::Help:
         return print_help(options->help_topic, out, err);
       case CliOptions::Mode::Version:
-        out << kVersion << "\n";
+        out << kVersion << "\nlibrary modules: " << stdlib_module_directory().string() << "\n";
         return kExitOk;
       case CliOptions::Mode::Demo: {
         const InterruptHandler signals({SIGINT, SIGTERM});  // a clean stop: RunInterrupted, exit 130

@@ -28,7 +28,17 @@ bool is_below(const fs::path& path, const fs::path& root) {
 
 fs::path stdlib_module_directory() {
   if (const char* dir = std::getenv("HLRSCRIPT_STDLIB"); dir && *dir) return dir;
-  return HLR_STDLIB_MODULES;
+  // Found once: the program does not move while it runs.
+  static const fs::path found = [] {
+    std::error_code ec;
+    const fs::path program = fs::read_symlink("/proc/self/exe", ec);
+    if (!ec) {
+      const fs::path installed = program.parent_path().parent_path() / HLR_INSTALLED_MODULES;
+      if (fs::is_directory(installed, ec)) return installed.lexically_normal();
+    }
+    return fs::path(HLR_STDLIB_MODULES);
+  }();
+  return found;
 }
 
 FileAccess::FileAccess(const fs::path& script_directory, const AccessOptions& options) {

@@ -54,7 +54,9 @@ std::filesystem::path resolved_path(const std::filesystem::path& path);
 // True when `path` is `root` or below it (both resolved).
 bool is_below(const std::filesystem::path& path, const std::filesystem::path& root);
 
-// The folder of the library modules (`include "std/NAME.hls"`): HLRSCRIPT_STDLIB, else the built-in one.
+// The folder of the library modules (`include "std/NAME.hls"`): HLRSCRIPT_STDLIB; else, installed,
+// ../share/hlrscript/modules beside the running program's folder (so a moved or packaged install finds its
+// own); else the source tree's, for a program run from its build folder.
 std::filesystem::path stdlib_module_directory();
 
 }  // namespace hlr::runtime
