@@ -1,0 +1,2 @@
+" hlrscript scene scripts.
+au BufRead,BufNewFile *.hls set filetype=hlrscript
