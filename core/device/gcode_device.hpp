@@ -17,9 +17,10 @@
 // pauses before it —; `G0 X Y` to its start, pen down (and its dwell), `G1 X Y F<feed>` through its
 // points (the feed on the first G1 of each stroke: a Z pen's G1 Z sets another), pen up (and dwell).
 // Finally pen up, `G0 X0 Y0` back to the origin and `M2` — except on a servo pen whose up value is above
-// its down value: M2 stops the spindle PWM, turning the servo to S0, which would lower that pen. Coordinates are written with three decimals
-// (the planning grid, gcode_grid_mm, is coarser), never as -0.000; points that print as the previous
-// one are dropped, and a stroke that collapses to one point is a dot (pen down and up where it is).
+// its down value: M2 stops the spindle PWM, turning the servo to S0, which would lower that pen. Coordinates
+// are written with three decimals (the planning grid, gcode_grid_mm, is coarser), never as -0.000; points
+// that print as the previous one are dropped, and a stroke that collapses to one point is a dot (pen down and
+// up where it is).
 #pragma once
 
 #include <filesystem>

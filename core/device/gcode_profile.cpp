@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "core/device/atomic_file.hpp"
+#include "core/device/profile_lookup.hpp"
 #include "core/format_number.hpp"
 #include "core/limits.hpp"
 
@@ -52,15 +53,6 @@ std::vector<GcodeProfile> make_profiles() {
   return all;
 }
 
-bool equal_ignoring_case(std::string_view a, std::string_view b) {
-  if (a.size() != b.size()) return false;
-  for (std::size_t i = 0; i < a.size(); ++i) {
-    const auto lower = [](char c) { return c >= 'A' && c <= 'Z' ? static_cast<char>(c - 'A' + 'a') : c; };
-    if (lower(a[i]) != lower(b[i])) return false;
-  }
-  return true;
-}
-
 std::string num(double v) { return format_for_message(v); }
 
 }  // namespace
@@ -71,19 +63,10 @@ const std::vector<GcodeProfile>& builtin_gcode_profiles() {
 }
 
 std::optional<GcodeProfile> gcode_profile_by_name(std::string_view name) {
-  for (const GcodeProfile& p : builtin_gcode_profiles())
-    if (equal_ignoring_case(p.name, name)) return p;
-  return std::nullopt;
+  return profile_by_name(builtin_gcode_profiles(), name);
 }
 
-std::string gcode_profile_list() {
-  std::string list;
-  for (const GcodeProfile& p : builtin_gcode_profiles()) {
-    if (!list.empty()) list += ", ";
-    list += p.name;
-  }
-  return list;
-}
+std::string gcode_profile_list() { return profile_names(builtin_gcode_profiles()); }
 
 const char* gcode_origin_name(GcodeOrigin origin) {
   return origin == GcodeOrigin::BottomLeft ? "bottom-left" : "top-left";

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "core/device/atomic_file.hpp"
+#include "core/device/profile_lookup.hpp"
 #include "core/format_number.hpp"
 #include "core/limits.hpp"
 
@@ -118,15 +119,6 @@ std::vector<HpglProfile> make_profiles() {
   return all;
 }
 
-bool equal_ignoring_case(std::string_view a, std::string_view b) {
-  if (a.size() != b.size()) return false;
-  for (std::size_t i = 0; i < a.size(); ++i) {
-    const auto lower = [](char c) { return c >= 'A' && c <= 'Z' ? static_cast<char>(c - 'A' + 'a') : c; };
-    if (lower(a[i]) != lower(b[i])) return false;
-  }
-  return true;
-}
-
 std::string mm(double v) { return format_mm_for_message(v); }
 
 }  // namespace
@@ -137,19 +129,10 @@ const std::vector<HpglProfile>& builtin_hpgl_profiles() {
 }
 
 std::optional<HpglProfile> hpgl_profile_by_name(std::string_view name) {
-  for (const HpglProfile& p : builtin_hpgl_profiles())
-    if (equal_ignoring_case(p.name, name)) return p;
-  return std::nullopt;
+  return profile_by_name(builtin_hpgl_profiles(), name);
 }
 
-std::string hpgl_profile_list() {
-  std::string list;
-  for (const HpglProfile& p : builtin_hpgl_profiles()) {
-    if (!list.empty()) list += ", ";
-    list += p.name;
-  }
-  return list;
-}
+std::string hpgl_profile_list() { return profile_names(builtin_hpgl_profiles()); }
 
 std::string hpgl_paper_list(const HpglProfile& profile) {
   std::string list;
