@@ -20,10 +20,10 @@ using repl::trim;
 
 namespace {
 
-const std::vector<std::string> kKeywords = {"solid",  "let",     "def",     "for",    "if",    "else",
-                                            "draw",   "camera",  "animate", "output", "paper", "style",
-                                            "pen",    "plotter", "include", "at",     "then",  "in",
-                                            "return", "vertex",  "face",    "hole",   "line"};
+const std::vector<std::string> kKeywords = {
+    "solid",  "let",    "def",   "for",  "if",      "else",    "draw", "camera", "animate",
+    "output", "paper",  "style", "pen",  "plotter", "include", "at",   "then",   "in",
+    "return", "vertex", "face",  "hole", "line",    "label",   "size", "page"};
 
 struct Command {
   const char* name;
@@ -35,7 +35,8 @@ const Command kCommands[] = {
     {"load", ":load FILE", "replace the session by a script (then :reload reads it again)"},
     {"reload", ":reload", "read the loaded script again"},
     {"show", ":show", "draw the current frame in the terminal"},
-    {"render", ":render [FILE]", "write the session's frames to FILE (.pdf .svg .png .hpgl .steps .json)"},
+    {"render", ":render [FILE]",
+     "write the session's frames to FILE (.pdf .svg .png .hpgl .gcode .steps .json)"},
     {"camera", ":camera [NAME]", "draw with camera NAME (no name: the last declared)"},
     {"orbit", ":orbit DTHETA [DPHI]",
      "step the camera round the scene (degrees; Albers' theta and phi keys)"},
