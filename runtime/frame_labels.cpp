@@ -52,6 +52,48 @@ void add_world_labels(const std::vector<LabelSetting>& labels, const Camera& cam
   }
 }
 
+Rect2 with_label_boxes(Rect2 extent, const std::vector<LabelSetting>& labels, const Camera& camera,
+                       const PageSpec& spec) {
+  const bool perspective = camera.projection == Projection::Perspective;
+  struct Box {
+    Point2 anchor;                       // picture
+    double width = 0, up = 0, down = 0;  // page mm from the baseline's start
+  };
+  std::vector<Box> boxes;  // world labels in front of the eye
+  for (const LabelSetting& label : labels) {
+    if (label.on_page || label.text.empty()) continue;
+    const Point3 view = camera.view(label.at);
+    if (perspective && !(view.z > camera.near_depth)) continue;
+    boxes.push_back({camera.project_view(view), stroke_text_width_mm(label.text, label.size_mm),
+                     label.size_mm, label.size_mm * kStrokeTextDescent});
+    extent.include(boxes.back().anchor);
+  }
+  if (boxes.empty()) return extent;
+  // The extent at `scale` mm per picture unit: the texts' boxes shrink in picture units as it grows.
+  const auto extent_at = [&](double scale) {
+    Rect2 e = extent;
+    for (const Box& b : boxes) {
+      e.include({b.anchor.x + b.width / scale, b.anchor.y + b.up / scale});  // picture y runs up
+      e.include({b.anchor.x, b.anchor.y - b.down / scale});
+    }
+    return e;
+  };
+  if (spec.mm_per_unit) return extent_at(*spec.mm_per_unit);
+  // The largest scale whose extent still fits at that scale: the fit of extent_at(s) grows with s, slower
+  // than s once the texts matter, so bisect between a scale that fits and the solids' own fit.
+  const auto fits = [&](double scale) { return fit_rect_to_page(extent_at(scale), spec).scale >= scale; };
+  double hi = fit_rect_to_page(extent, spec).scale;
+  if (fits(hi)) return extent_at(hi);
+  double lo = hi;
+  for (int i = 0; i < 64 && !fits(lo); ++i) lo /= 2;
+  if (!fits(lo)) return extent_at(hi);  // a text wider than the page: it runs off, the drawing stays
+  for (int i = 0; i < 64; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    (fits(mid) ? lo : hi) = mid;
+  }
+  return extent_at(lo);
+}
+
 std::vector<PageText> page_labels(const std::vector<LabelSetting>& labels) {
   std::vector<PageText> out;
   for (const LabelSetting& label : labels)

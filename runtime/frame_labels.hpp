@@ -9,8 +9,9 @@
 // lie in front of it. A label whose point is behind the eye, or at the near plane, is not drawn.
 //
 // The letters' size on the page needs the page layout, and the layout fits the drawing: the camera's frame
-// when it has one (known before the engine runs), else the visible pieces. Labels never move the drawing:
-// the layout is fixed before they are added (PagePlotOptions::extent).
+// when it has one (known before the engine runs; labels beyond it are cut there, as edges are), else the
+// solids' visible pieces and the labels' text together (with_label_boxes), so that every label is on the
+// page. The layout is then fixed before the labels go through the engine (PagePlotOptions::extent).
 #pragma once
 
 #include <string>
@@ -30,6 +31,12 @@ bool has_world_labels(const std::vector<LabelSetting>& labels);
 // labels), with their pens in `pens` (parallel). Labels with empty text or behind the eye are skipped.
 void add_world_labels(const std::vector<LabelSetting>& labels, const Camera& camera, const PageLayout& layout,
                       Scene& scene, std::vector<int>& pens);
+
+// `extent` (picture units) grown to hold each world label's text at the scale the resulting layout gives:
+// the text's size is fixed on the page, so its size in the picture depends on the fit (the largest scale
+// at which everything fits, found by bisection). A text wider than the page itself runs off it.
+Rect2 with_label_boxes(Rect2 extent, const std::vector<LabelSetting>& labels, const Camera& camera,
+                       const PageSpec& spec);
 
 // The page labels, as PagePlotOptions takes them.
 std::vector<PageText> page_labels(const std::vector<LabelSetting>& labels);

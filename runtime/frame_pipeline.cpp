@@ -102,7 +102,8 @@ void run_frame(const Program& program, int frame, double fps, const PipelineOpti
     std::optional<Rect2> extent = camera.frame;
     if (!extent) {
       render(scene.scene, result);
-      extent = drawing_extent(std::nullopt, result.segments);
+      extent = with_label_boxes(drawing_extent(std::nullopt, result.segments), scene.labels, camera,
+                                settings.plot.spec);
     }
     Scene labelled = scene.scene;  // the solids are shared, not copied
     settings.plot.object_pens.resize(labelled.objects.size(), 1);

@@ -138,19 +138,50 @@ TEST(Labels, SolidsHideWhatIsBehindThem) {
   EXPECT_GT(half.hidden, 5);
 }
 
-TEST(Labels, CapitalsAreTheirSizeOnThePageAndLabelsNeverMoveTheDrawing) {
+TEST(Labels, WithAFrameCapitalsAreTheirSizeAndLabelsNeverMoveTheDrawing) {
   const hlr::test::TempDir dir(current_test_name());
-  for (const char* camera : {"lookat(eye: (10, 0, 0), target: (0, 0, 0), fov: 30)",  // with a frame
-                             "orbit(theta: 0, phi: 90, rho: 10, d: 30)"}) {          // fitted to the pieces
+  const std::string scene =
+      "draw box(2, 2, 2)\ncamera main = lookat(eye: (10, 0, 0), target: (0, 0, 0), fov: 30, "
+      "aspect: 1.4)\n";
+  const json plain = render_json(dir, scene);
+  const json labelled = render_json(dir, scene + "label \"HH\" at (2, 1, 1) size: 7\n");
+  EXPECT_EQ(plain["layout"], labelled["layout"]);
+  const LabelPieces hh = pieces_of(labelled, "label 1");
+  ASSERT_EQ(hh.hidden, 0);
+  ASSERT_GT(hh.visible, 0);
+  EXPECT_NEAR(hh.page_ymax - hh.page_ymin, 7, 1e-6);
+}
+
+// Without a frame the page fits the drawing, labels included: a label far to the side of the solids is
+// whole on the page, inside the margins, at its size.
+TEST(Labels, WithoutAFrameThePageMakesRoomForTheLabels) {
+  const hlr::test::TempDir dir(current_test_name());
+  for (const char* camera :
+       {"orbit(theta: 0, phi: 90, rho: 10, d: 30)", "lookat(eye: (10, 0, 0), target: (0, 0, 0), fov: 30)"}) {
     SCOPED_TRACE(camera);
     const std::string scene = std::string("draw box(2, 2, 2)\ncamera main = ") + camera + "\n";
-    const json plain = render_json(dir, scene);
-    const json labelled = render_json(dir, scene + "label \"HH\" at (2, 3, 0) size: 7\n");
-    EXPECT_EQ(plain["layout"], labelled["layout"]);
-    const LabelPieces hh = pieces_of(labelled, "label 1");
-    ASSERT_EQ(hh.hidden, 0);
-    ASSERT_GT(hh.visible, 0);
-    EXPECT_NEAR(hh.page_ymax - hh.page_ymin, 7, 1e-6);
+    const json frame = render_json(dir, scene + "label \"A LONG LABEL TO THE SIDE\" at (0, 6, 3) size: 7\n");
+    const double scale = frame["layout"]["mm_per_unit"], ox = frame["layout"]["origin_mm"][0],
+                 oy = frame["layout"]["origin_mm"][1];
+    double xmin = 1e9, xmax = -1e9, ymin = 1e9, ymax = -1e9;
+    int pieces = 0;
+    for (const json& s : frame["segments"]) {
+      if (s["object"] != "label 1") continue;
+      ++pieces;
+      for (const json& q : s["s"]) {
+        const double x = ox + scale * q[0].get<double>(), y = oy - scale * q[1].get<double>();
+        xmin = std::min(xmin, x);
+        xmax = std::max(xmax, x);
+        ymin = std::min(ymin, y);
+        ymax = std::max(ymax, y);
+      }
+    }
+    ASSERT_GT(pieces, 50);
+    EXPECT_GE(xmin, 12 - 0.01);  // the default 12 mm margins of A4 landscape
+    EXPECT_LE(xmax, 297 - 12 + 0.01);
+    EXPECT_GE(ymin, 12 - 0.01);
+    EXPECT_LE(ymax, 210 - 12 + 0.01);
+    EXPECT_NEAR(ymax - ymin, 7, 1e-6);  // capitals only
   }
 }
 
