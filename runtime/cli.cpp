@@ -14,6 +14,8 @@
 #include <sstream>
 
 #include "core/device/atomic_file.hpp"
+#include "core/device/gcode_profile.hpp"
+#include "core/device/hpgl_profile.hpp"
 #include "runtime/demo_script.hpp"
 #include "runtime/eval_detail.hpp"
 #include "runtime/eval_error.hpp"
@@ -188,6 +190,10 @@ int run_program(const Program& program, const CliOptions& o, std::ostream& out, 
   std::vector<int> asked;  // the frames selected, once known
   try {
     FrameScene first = program.evaluate_first_frame();
+    if (o.list_cameras) {
+      for (const NamedCamera& c : first.cameras) out << c.name << "\n";
+      return kExitOk;
+    }
     const int frame_count = first.animation ? first.animation->frames : 1;
     const double fps = first.animation ? first.animation->fps : kDefaultFps;
     const std::vector<int> frames = select_frames(frame_count, o.frames, o.shard);
@@ -356,6 +362,10 @@ int run_cli(int argc, const char* const argv[], std::istream& in, bool in_is_ter
     switch (options->mode) {
       case CliOptions::Mode::Help:
         return print_help(options->help_topic, out, err);
+      case CliOptions::Mode::ListPlotters:
+        for (const HpglProfile& p : builtin_hpgl_profiles()) out << p.name << "\n";
+        for (const GcodeProfile& p : builtin_gcode_profiles()) out << p.name << "\n";
+        return kExitOk;
       case CliOptions::Mode::Version:
         out << kVersion << "\nlibrary modules: " << stdlib_module_directory().string() << "\n";
         return kExitOk;

@@ -26,7 +26,8 @@ enum ExitCode : int {
 };
 
 struct CliOptions {
-  enum class Mode { Render, Check, Watch, Demo, Repl, Help, Version } mode = Mode::Render;
+  enum class Mode { Render, Check, Watch, Demo, Repl, Help, Version, ListPlotters } mode = Mode::Render;
+  bool list_cameras = false;  // --list-cameras FILE: Check, printing the cameras of frame 0
   std::string script;
   std::string help_topic;             // hlrscript help TOPIC
   std::optional<std::string> output;  // -o

@@ -92,6 +92,8 @@ po::options_description visible_options() {
       ("quiet,q", "no progress line on a terminal")                                                         //
       ("verbose", "also print notes on what the script's options accept (warped faces, crossing holes)")    //
       ("repl", "start the REPL (also: hlrscript repl [FILE], or hlrscript alone in a terminal)")            //
+      ("list-cameras", "print the cameras FILE declares, one a line (for shell completion), and exit")      //
+      ("list-plotters", "print the built-in plotter profiles, one a line, and exit")                        //
       ("help,h", "show this help")                                                                          //
       ("version", "show the version");
   return o;
@@ -315,9 +317,13 @@ std::optional<CliOptions> parse_cli(int argc, const char* const argv[], std::ost
     o.mode = CliOptions::Mode::Help;
   else if (vm.count("version"))
     o.mode = CliOptions::Mode::Version;
+  else if (vm.count("list-plotters"))
+    o.mode = CliOptions::Mode::ListPlotters;
   else if (vm.count("demo"))
     o.mode = CliOptions::Mode::Demo;
-  if (o.mode == CliOptions::Mode::Help || o.mode == CliOptions::Mode::Version) return o;
+  if (o.mode == CliOptions::Mode::Help || o.mode == CliOptions::Mode::Version ||
+      o.mode == CliOptions::Mode::ListPlotters)
+    return o;
 
   std::vector<std::string> args =
       vm.count("args") ? vm["args"].as<std::vector<std::string>>() : std::vector<std::string>{};
@@ -347,6 +353,12 @@ std::optional<CliOptions> parse_cli(int argc, const char* const argv[], std::ost
     if (args.size() > 1)
       return usage_error(err, "one script at a time (got '" + args[0] + "' and '" + args[1] + "')");
     if (!args.empty()) o.script = args.front();
+    if (vm.count("list-cameras")) {
+      if (o.script.empty() || o.mode != CliOptions::Mode::Render)
+        return usage_error(err, "--list-cameras needs a script: hlrscript --list-cameras FILE.hls");
+      o.mode = CliOptions::Mode::Check;
+      o.list_cameras = true;
+    }
   }
 
   std::string error;

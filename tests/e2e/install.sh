@@ -22,6 +22,9 @@ program=$work/moved/bin/hlrscript
 [ -x "$program" ] || fail "no bin/hlrscript installed"
 [ -f "$work/moved/share/hlrscript/modules/gears.hls" ] || fail "the library modules are not installed"
 [ -f "$work/moved/share/doc/hlrscript/examples/showcase/workshop.hls" ] || fail "the examples are not installed"
+[ -f "$work/moved/share/man/man1/hlrscript.1" ] || fail "the manual page is not installed"
+[ -f "$work/moved/share/bash-completion/completions/hlrscript" ] || fail "the bash completion is not installed"
+[ -f "$work/moved/share/zsh/vendor-completions/_hlrscript" ] || fail "the zsh completion is not installed"
 
 "$program" --version >"$work/version.txt" 2>&1 || fail "--version failed"
 grep -qx "library modules: $work/moved/share/hlrscript/modules" "$work/version.txt" ||
@@ -54,6 +57,7 @@ else
   dpkg-deb -x "$deb" "$work/unpacked"
   [ -x "$work/unpacked/usr/bin/hlrscript" ] || fail "the package has no /usr/bin/hlrscript"
   [ -f "$work/unpacked/usr/share/hlrscript/modules/gears.hls" ] || fail "the package has no modules"
+  [ -f "$work/unpacked/usr/share/man/man1/hlrscript.1" ] || fail "the package has no manual page"
   # Unpacked anywhere, it too finds its own modules.
   "$work/unpacked/usr/bin/hlrscript" gears.hls -o unpacked.pdf >out.txt 2>&1 ||
     fail "the unpacked program cannot render: $(cat out.txt)"
