@@ -104,6 +104,11 @@ struct Tolerance {
   static constexpr double kPlotterUnitSnap = 1e-6;
   // HPGL: a page matches a profile's paper when each side is within this many mm of the sheet's.
   static constexpr double kPaperMatchMm = 0.5;
+  // G-code: a page this many mm larger than the work area still fits (a page exactly the area's size).
+  static constexpr double kWorkAreaSlackMm = 1e-6;
+  // Plotter SVG: points this far off the page, relative to its width + height, are on its edge (rounding
+  // in the layout); they are cut at the exact edge.
+  static constexpr double kPageEdgeRelative = 1e-6;
 };
 
 }  // namespace hlr

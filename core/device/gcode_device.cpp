@@ -8,6 +8,7 @@
 #include "core/device/atomic_file.hpp"
 #include "core/format_number.hpp"
 #include "core/geometry/clip2d.hpp"
+#include "core/tolerance.hpp"
 
 namespace hlr {
 namespace {
@@ -54,7 +55,7 @@ Placement place(const GcodeProfile& profile, double w, double h) {
   check_gcode_profile(profile);
   if (!(std::isfinite(w) && std::isfinite(h) && w > 0 && h > 0))
     throw DeviceError("G-code: the page size must be positive, not " + mm(w) + " × " + mm(h) + " mm");
-  constexpr double kSlack = 1e-6;  // a page exactly the area's size fits
+  constexpr double kSlack = Tolerance::kWorkAreaSlackMm;
   const double aw = profile.width_mm, ah = profile.height_mm;
   if (w > aw + kSlack || h > ah + kSlack) {
     std::string message = "G-code: the page is " + mm(w) + " × " + mm(h) + " mm but plotter '" +

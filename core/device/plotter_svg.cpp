@@ -13,6 +13,7 @@
 #include "core/device/page_style.hpp"
 #include "core/format_number.hpp"
 #include "core/geometry/clip2d.hpp"
+#include "core/tolerance.hpp"
 
 namespace hlr {
 namespace {
@@ -118,7 +119,7 @@ std::string to_plotter_svg(const PlotPage& page, const PlotterSvgOptions& option
                       format_mm_for_message(page.width_mm) + " × " + format_mm_for_message(page.height_mm) +
                       " mm");
   // Points on the edge belong to the page; rounding in the layout may put them a hair beyond it.
-  const double slack = 1e-6 * (page.width_mm + page.height_mm);
+  const double slack = Tolerance::kPageEdgeRelative * (page.width_mm + page.height_mm);
   const Rect2 sheet{-slack, -slack, page.width_mm + slack, page.height_mm + slack};
 
   // Each layer's paths, in planned order; the layers in pen order.
