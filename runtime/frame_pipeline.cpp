@@ -137,7 +137,10 @@ void run_frame(const Program& program, int frame, double fps, const PipelineOpti
   r.visible_segments = frame_out.plot.visible_segments;
   if (options.write) {
     try {
+      const auto encode_start = Clock::now();
       job.encoded = settings.device->encode(frame_out);
+      r.encode_seconds = seconds_since(encode_start);
+      r.encoded_bytes = job.encoded.bytes.size() + job.encoded.file_head.size();
     } catch (const DeviceError& e) {
       throw OutputError("cannot write '" + settings.target.path.string() + "': " + e.what(), settings.target);
     }

@@ -94,6 +94,8 @@ struct FrameRecord {
   std::filesystem::path path;  // the file it went to
   PlanStats plan;
   std::size_t visible_segments = 0;           // pieces given to the pen plan
+  double encode_seconds = 0;                  // the device's encode() of the planned page
+  std::size_t encoded_bytes = 0;              // what encode() made for the file
   std::vector<VisibleSegment> kept_segments;  // with keep_segments only
 };
 

@@ -17,6 +17,7 @@
 #include "core/device/page_layout.hpp"
 #include "core/device/page_style.hpp"
 #include "core/device/pdf_writer.hpp"
+#include "core/device/png_encoder.hpp"
 #include "core/format_number.hpp"
 #include "core/geometry/clip2d.hpp"
 
@@ -92,9 +93,18 @@ std::string valid_utf8(const std::string& s) {
   return out;
 }
 
+// A grey of level `g` (0 black, 1 white): as a colour, or on an alpha-only surface as ink of 1 − g.
+void set_grey_or_colour(cairo_t* cr, double r, double g, double b, bool ink) {
+  if (ink)
+    cairo_set_source_rgba(cr, 0, 0, 0, 1 - g);
+  else
+    cairo_set_source_rgb(cr, r, g, b);
+}
+
 // Draws one page on a context whose user unit is `units_per_mm` device units, then leaves the context
-// as it found it.
-void draw_page(cairo_t* cr, const PlotPage& page, const CairoOptions& o, double units_per_mm) {
+// as it found it. With `ink` the surface is alpha-only and every colour is a grey (see png_bytes).
+void draw_page(cairo_t* cr, const PlotPage& page, const CairoOptions& o, double units_per_mm, bool ink) {
+  const bool raster = cairo_surface_get_type(cairo_get_target(cr)) == CAIRO_SURFACE_TYPE_IMAGE;
   cairo_save(cr);
   cairo_scale(cr, units_per_mm, units_per_mm);
   cairo_set_line_cap(cr, CAIRO_LINE_CAP_ROUND);
@@ -102,31 +112,38 @@ void draw_page(cairo_t* cr, const PlotPage& page, const CairoOptions& o, double 
 
   if (o.decorations && page.border && !page.border->empty()) {
     const Rect2& b = *page.border;
-    cairo_set_source_rgb(cr, kBorderGrey, kBorderGrey, kBorderGrey);
+    set_grey_or_colour(cr, kBorderGrey, kBorderGrey, kBorderGrey, ink);
     cairo_set_line_width(cr, 0.5 * o.pens.default_width_mm());
     cairo_rectangle(cr, b.xmin, b.ymin, b.width(), b.height());
     cairo_stroke(cr);
   }
 
   const Rect2 box = stroke_clip_box(page, o.pens);
-  for_each_pen_run(page, o.pens,
-                   [&](const PenStyle& style, StrokeLayer layer, std::size_t first, std::size_t end) {
-                     cairo_set_source_rgb(cr, style.r, style.g, style.b);
-                     cairo_set_line_width(cr, style.width_mm);
-                     if (layer == StrokeLayer::Hidden) {
-                       const double dash[] = {dash_on_mm(style.width_mm), dash_off_mm(style.width_mm)};
-                       cairo_set_dash(cr, dash, 2, 0);
-                     } else {
-                       cairo_set_dash(cr, nullptr, 0, 0);
-                     }
-                     for (std::size_t i = first; i < end; ++i) add_stroke(cr, page.strokes[i], box);
-                     cairo_stroke(cr);
-                   });
+  for_each_pen_run(
+      page, o.pens, [&](const PenStyle& style, StrokeLayer layer, std::size_t first, std::size_t end) {
+        set_grey_or_colour(cr, style.r, style.g, style.b, ink);
+        // cairo's 4 × 4-sample coverage takes a third of the time of its 256 levels
+        // (bench/README.md, "PNG"); on a line a pixel wide or more no eye tells them
+        // apart, on thinner ones its 16 steps show as bands.
+        cairo_set_antialias(cr, raster && style.width_mm * units_per_mm >= kFastAntialiasMinPixels
+                                    ? CAIRO_ANTIALIAS_FAST
+                                    : CAIRO_ANTIALIAS_DEFAULT);
+        cairo_set_line_width(cr, style.width_mm);
+        if (layer == StrokeLayer::Hidden) {
+          const double dash[] = {dash_on_mm(style.width_mm), dash_off_mm(style.width_mm)};
+          cairo_set_dash(cr, dash, 2, 0);
+        } else {
+          cairo_set_dash(cr, nullptr, 0, 0);
+        }
+        for (std::size_t i = first; i < end; ++i) add_stroke(cr, page.strokes[i], box);
+        cairo_stroke(cr);
+      });
   cairo_set_dash(cr, nullptr, 0, 0);
+  cairo_set_antialias(cr, CAIRO_ANTIALIAS_DEFAULT);
 
   if (o.decorations && !page.caption.empty()) {
     // In the bottom margin, so a caption never moves the drawing.
-    cairo_set_source_rgb(cr, 0, 0, 0);
+    set_grey_or_colour(cr, 0, 0, 0, ink);
     cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
     cairo_set_font_size(cr, kCaptionPt / kPointsPerMm);
     cairo_move_to(cr, page.margin_mm, page.height_mm - 0.6 * page.margin_mm);
@@ -139,13 +156,13 @@ void draw_page(cairo_t* cr, const PlotPage& page, const CairoOptions& o, double 
 // `before_page` runs before each page is drawn (the PNG paints its background there).
 template <typename BeforePage>
 void draw_all(cairo_surface_t* surface, std::span<const PlotPage> pages, const CairoOptions& o,
-              double units_per_mm, BeforePage before_page) {
+              double units_per_mm, BeforePage before_page, bool ink = false) {
   check_cairo(cairo_surface_status(surface));
   {
     CairoContext cr{cairo_create(surface)};
     for (const PlotPage& page : pages) {
       before_page(cr.p, page);
-      draw_page(cr.p, page, o, units_per_mm);
+      draw_page(cr.p, page, o, units_per_mm, ink);
       if (o.format != CairoFormat::Png) cairo_show_page(cr.p);
     }
     check_cairo(cairo_status(cr.p));
@@ -192,19 +209,59 @@ std::string svg_bytes(const PlotPage& page, const CairoOptions& o) {
   return renumber_surface_ids(bytes);
 }
 
+// Whether every pen on the page draws in a grey (black included): then the PNG is rasterised into one
+// byte of ink a pixel and stored as grey, a quarter of the pixels' memory and of what deflate reads.
+bool all_pens_grey(const PlotPage& page, const PenTable& pens) {
+  int last = 0;  // strokes come in runs of one pen
+  for (const PlotStroke& s : page.strokes) {
+    if (s.pen == last) continue;
+    last = s.pen;
+    const PenStyle style = pens.style(s.pen);
+    if (style.r != style.g || style.g != style.b) return false;
+  }
+  return true;
+}
+
+// Whether every pen on the page is black.
+bool all_pens_black(const PlotPage& page, const PenTable& pens) {
+  for (const PlotStroke& s : page.strokes) {
+    const PenStyle style = pens.style(s.pen);
+    if (style.r != 0 || style.g != 0 || style.b != 0) return false;
+  }
+  return true;
+}
+
 std::string png_bytes(const PlotPage& page, const CairoOptions& o) {
   const PixelSize size = png_pixel_size(page, o.dpi);
-  CairoSurface surface{cairo_image_surface_create(CAIRO_FORMAT_ARGB32, static_cast<int>(size.width),
-                                                  static_cast<int>(size.height))};
-  draw_all(surface.p, std::span(&page, 1), o, o.dpi / kMmPerInch, [&](cairo_t* cr, const PlotPage&) {
-    if (!o.white_background) return;  // a new image surface is transparent
-    cairo_set_source_rgb(cr, 1, 1, 1);
-    cairo_paint(cr);
-  });
+  const bool grey = o.white_background ? all_pens_grey(page, o.pens) : all_pens_black(page, o.pens);
+  // Grey pages are drawn as ink on an alpha-only surface: a pen of grey g lays ink 1 − g, replacing
+  // (SOURCE) what lies under its coverage exactly as an opaque colour would over white paper.
+  const cairo_format_t format = grey                 ? CAIRO_FORMAT_A8
+                                : o.white_background ? CAIRO_FORMAT_RGB24
+                                                     : CAIRO_FORMAT_ARGB32;
+  CairoSurface surface{
+      cairo_image_surface_create(format, static_cast<int>(size.width), static_cast<int>(size.height))};
+  draw_all(
+      surface.p, std::span(&page, 1), o, o.dpi / kMmPerInch,
+      [&](cairo_t* cr, const PlotPage&) {
+        if (grey) {
+          cairo_set_operator(cr, CAIRO_OPERATOR_SOURCE);
+          return;  // a new A8 surface holds no ink
+        }
+        if (!o.white_background) return;  // a new image surface is transparent
+        cairo_set_source_rgb(cr, 1, 1, 1);
+        cairo_paint(cr);
+      },
+      grey);
   cairo_surface_flush(surface.p);
-  std::string bytes;
-  check_cairo(cairo_surface_write_to_png_stream(surface.p, append_to_string, &bytes));
-  return bytes;
+  PngRaster raster;
+  raster.data = cairo_image_surface_get_data(surface.p);
+  raster.width = size.width;
+  raster.height = size.height;
+  raster.stride = cairo_image_surface_get_stride(surface.p);
+  raster.pixels = grey ? (o.white_background ? PngPixels::InkGrey : PngPixels::InkGreyAlpha)
+                       : (o.white_background ? PngPixels::Rgb : PngPixels::Rgba);
+  return encode_png(raster);
 }
 
 void write_bytes(const std::filesystem::path& path, const std::string& bytes) {

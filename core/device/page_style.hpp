@@ -22,6 +22,9 @@ inline double dash_on_mm(double width_mm) { return std::max(0.0, kDashMm - width
 inline double dash_off_mm(double width_mm) { return kGapMm + width_mm; }
 inline constexpr double kBorderGrey = 0.5;  // the camera frame's border, at half the default pen width
 inline constexpr double kCaptionPt = 10;    // sans serif, at (margin, height − 0.6·margin)
+// Rasters draw pens at least this many pixels wide with 4 × 4 samples a pixel, thinner ones with 256
+// coverage levels (core/device/cairo_device.cpp).
+inline constexpr double kFastAntialiasMinPixels = 1;
 // Strokes are clipped to the page grown by this much (plus the widest pen), so that caps at the edge
 // are drawn whole and no device sees coordinates beyond its range.
 inline constexpr double kClipPadMm = 10;

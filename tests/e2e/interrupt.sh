@@ -12,7 +12,7 @@ work=$3
 rm -rf "$work"
 mkdir -p "$work"
 command -v tmux >/dev/null || { echo "tmux is missing: run scripts/setup.sh"; exit 1; }
-last=23  # frames 0-23 of the turntable, ≈ 0.1 s each on one thread
+last=143  # frames 0-143 of the turntable, ≈ 20 ms each on one thread: long enough to stop on the way
 render=("$hlrscript" "$scene" --frames "0-$last" --jobs 1)
 mkdir -p "$work/whole"
 "${render[@]}" -o "$work/whole/f-{frame:03}.png" -q >/dev/null 2>&1

@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
 """Compares two PNG pictures of the same drawing within a tolerance: same size, and at most MAX_SHARE of
-the pixels differing by more than 48 in a channel (antialiasing may differ in the last bits between
+the pixels differing by more than 48 in a channel of RGBA (a grey picture is read as RGB with three equal
+channels, one without alpha as opaque, so a grey file and a colour one of the same drawing compare) (antialiasing may differ in the last bits between
 library versions; a moved line does not pass). A small PNG reader of our own (8-bit grey, grey+alpha,
 RGB or RGBA, not interlaced — what cairo writes), so the tests need no imaging library.
 
@@ -54,15 +55,36 @@ def read_png(path):
     return w, h, channels, rows
 
 
+def rgba_rows(w, channels, rows):
+    """Each row as RGBA bytes."""
+    out = []
+    for row in rows:
+        if channels == 4:
+            out.append(row)
+            continue
+        rgba = bytearray(4 * w)
+        for x in range(w):
+            p = row[x * channels:(x + 1) * channels]
+            if channels == 1:
+                rgba[4 * x:4 * x + 4] = bytes((p[0], p[0], p[0], 255))
+            elif channels == 2:
+                rgba[4 * x:4 * x + 4] = bytes((p[0], p[0], p[0], p[1]))
+            else:
+                rgba[4 * x:4 * x + 4] = bytes((p[0], p[1], p[2], 255))
+        out.append(bytes(rgba))
+    return out
+
+
 def main():
     expected, actual = read_png(sys.argv[1]), read_png(sys.argv[2])
     max_share = float(sys.argv[3]) if len(sys.argv) > 3 else 0.002
-    if expected[:3] != actual[:3]:
-        sys.exit(f"{sys.argv[2]}: {actual[0]}x{actual[1]} with {actual[2]} channels, expected "
-                 f"{expected[0]}x{expected[1]} with {expected[2]}")
-    w, h, n = expected[:3]
-    if expected[3] == actual[3]:
+    if expected[:2] != actual[:2]:
+        sys.exit(f"{sys.argv[2]}: {actual[0]}x{actual[1]} pixels, expected {expected[0]}x{expected[1]}")
+    w, h, n = expected[0], expected[1], 4
+    if expected[2:] == actual[2:]:
         return
+    expected = (w, h, n, rgba_rows(w, expected[2], expected[3]))
+    actual = (w, h, n, rgba_rows(w, actual[2], actual[3]))
     differing = 0
     for row_e, row_a in zip(expected[3], actual[3]):
         for x in range(w):
