@@ -21,10 +21,10 @@ _hlrscript() {
       local files ext
       files=$(compgen -f -- "$cur")
       COMPREPLY=($(compgen -d -S / -- "$cur"))
-      for ext in pdf svg png hpgl plt gcode nc steps json; do
+      for ext in pdf svg png hpgl plt gcode nc steps json jsonl; do
         COMPREPLY+=($(compgen -f -X "!*.$ext" -- "$cur"))
       done
-      [[ -n $cur && $cur != *.* ]] && for ext in pdf svg png hpgl gcode json; do COMPREPLY+=("$cur.$ext"); done
+      [[ -n $cur && $cur != *.* ]] && for ext in pdf svg png hpgl gcode json jsonl; do COMPREPLY+=("$cur.$ext"); done
       compopt -o nospace 2>/dev/null
       return ;;
     --camera)
@@ -39,6 +39,7 @@ _hlrscript() {
     --text) COMPREPLY=($(compgen -W "stroke outline" -- "$cur")); return ;;
     --hpgl-moves) COMPREPLY=($(compgen -W "relative absolute" -- "$cur")); return ;;
     --pen-order) COMPREPLY=($(compgen -W "none greedy optimized" -- "$cur")); return ;;
+    --json) COMPREPLY=($(compgen -W "all camera layout segments strokes stats strokes,stats" -- "$cur")); return ;;
     --paper) COMPREPLY=($(compgen -W "A0 A1 A2 A3 A4 A5 A6 Letter Legal Tabloid" -- "$cur")); return ;;
     --limit) COMPREPLY=($(compgen -W "steps= faces= vertices= segments= memory= calls= list= string=" -- "$cur"))
       compopt -o nospace 2>/dev/null; return ;;

@@ -28,9 +28,8 @@ po::options_description visible_options() {
   po::options_description o("options");
   o.add_options()                                                //
       ("output,o", po::value<std::string>()->value_name("OUT"),  //
-       "output file: .pdf (one page per frame), .svg, .png, .hpgl, .gcode (one frame per file) or .json; "
-       "{frame:04} "
-       "in the name writes one file per frame")  //
+       "output file: .pdf (one page per frame), .svg, .png, .hpgl, .gcode (one frame per file), .json or "
+       ".jsonl (a frame a line); {frame:04} in the name writes one file per frame")  //
       ("camera", po::value<std::string>()->value_name("NAME"),
        "camera to draw with (default: the last declared)")  //
       ("frames", po::value<std::string>()->value_name("LIST"),
@@ -79,6 +78,9 @@ po::options_description visible_options() {
        "cut strokes at the plotter's reach (HPGL) or the page (G-code, plotter SVG) instead of failing")  //
       ("hpgl-moves", po::value<std::string>()->value_name("relative|absolute"),
        "HPGL moves (default: the profile's)")  //
+      ("json", po::value<std::string>()->value_name("LIST"),
+       "what each JSON frame holds besides its number and time: all (the default) or a comma-separated list "
+       "of camera, layout, segments, strokes, stats")  //
       ("pen-order", po::value<std::string>()->value_name("none|greedy|optimized"),
        "pen planning: file order, greedy nearest-end, or optimized (default)")  //
       ("plan-budget", po::value<std::string>()->value_name("MS"),
@@ -192,6 +194,17 @@ bool parse_device_options(const po::variables_map& vm, DeviceOptions& d, std::st
       !either_option(vm, "svg", "plotter", "document", d.plotter_svg, error) ||
       !either_option(vm, "hpgl-moves", "relative", "absolute", d.relative, error))
     return false;
+  if (vm.count("json")) {
+    const std::string v = vm["json"].as<std::string>();
+    const std::optional<JsonParts> parts = parse_json_parts(v);
+    if (!parts) {
+      error =
+          "--json takes all or a comma-separated list of camera, layout, segments, strokes, stats, not '" +
+          v + "'";
+      return false;
+    }
+    d.json_parts = *parts;
+  }
   if (vm.count("pen-order")) {
     const std::string v = vm["pen-order"].as<std::string>();
     if (v == "none")
@@ -279,7 +292,8 @@ bool parse_access_options(const po::variables_map& vm, AccessOptions& a, std::st
 
 std::string usage_text() {
   std::ostringstream s;
-  s << "usage: hlrscript FILE.hls [-o OUT.pdf|.svg|.png|.hpgl|.gcode|.json] [--camera NAME] [--frames A-B]\n"
+  s << "usage: hlrscript FILE.hls [-o OUT.pdf|.svg|.png|.hpgl|.gcode|.json|.jsonl] [--camera NAME] [--frames "
+       "A-B]\n"
        "                          [--shard K/N] [--jobs N] [--hidden off|dashed] [--stats]\n"
        "                          [--paper SIZE] [--portrait] [--margin MM] [--scale MM] [--dpi N]\n"
        "                          [--plotter NAME] [--clip] [--pen-order none|greedy|optimized]\n"

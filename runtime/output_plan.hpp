@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "core/device/device.hpp"
+#include "core/device/json_device.hpp"
 #include "core/plan/pen_plan.hpp"
 #include "runtime/frame_scene.hpp"
 #include "runtime/program.hpp"
@@ -65,6 +66,7 @@ struct DeviceOptions {
   std::optional<bool> plotter_svg;           // --svg plotter|document (default: plotter when one is named)
   std::optional<bool> relative;              // --hpgl-moves relative|absolute
   PenOrder pen_order = PenOrder::Optimized;  // --pen-order
+  JsonParts json_parts;                      // --json: what each JSON frame holds
   double plan_budget_ms = 200;               // --plan-budget (per frame, Optimized only)
   std::string creation_date;                 // PDF metadata: SOURCE_DATE_EPOCH when set, else now
 };

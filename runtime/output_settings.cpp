@@ -199,8 +199,11 @@ std::shared_ptr<const Device> device_for(DeviceKind kind, const FrameScene& scen
       gcode.clip = d.clip;
       return make_gcode_device(gcode_plotter_for(scene, run), gcode);
     }
-    case DeviceKind::Json: {
+    case DeviceKind::Json:
+    case DeviceKind::JsonLines: {
       JsonOptions json;
+      json.lines = kind == DeviceKind::JsonLines;
+      json.parts = d.json_parts;
       json.title = run.title;
       json.pen_order = pen_order_name(d.pen_order);
       return make_json_device(json);

@@ -18,6 +18,7 @@
 #include "core/device/page_style.hpp"
 #include "core/device/pdf_writer.hpp"
 #include "core/device/png_encoder.hpp"
+#include "core/device/utf8.hpp"
 #include "core/format_number.hpp"
 #include "core/geometry/clip2d.hpp"
 
@@ -72,17 +73,7 @@ void add_stroke(cairo_t* cr, const PlotStroke& stroke, const Rect2& box) {
 std::string valid_utf8(const std::string& s) {
   std::string out;
   for (std::size_t i = 0; i < s.size();) {
-    const auto c = static_cast<unsigned char>(s[i]);
-    const std::size_t n = c < 0x80 ? 1 : (c >> 5) == 0x6 ? 2 : (c >> 4) == 0xe ? 3 : (c >> 3) == 0x1e ? 4 : 0;
-    bool ok = n > 0 && i + n <= s.size() && c != 0;
-    for (std::size_t k = 1; ok && k < n; ++k) ok = (static_cast<unsigned char>(s[i + k]) & 0xc0) == 0x80;
-    if (ok && n > 1) {  // no overlong forms, surrogates or code points past U+10FFFF
-      unsigned cp = c & (0xff >> (n + 1));
-      for (std::size_t k = 1; k < n; ++k) cp = (cp << 6) | (static_cast<unsigned char>(s[i + k]) & 0x3f);
-      const unsigned min[] = {0, 0, 0x80, 0x800, 0x10000};
-      ok = cp >= min[n] && cp <= 0x10ffff && !(cp >= 0xd800 && cp <= 0xdfff);
-    }
-    if (ok) {
+    if (const std::size_t n = utf8_sequence_length(s, i)) {
       out.append(s, i, n);
       i += n;
     } else {

@@ -63,7 +63,7 @@ class Device {
  public:
   virtual ~Device() = default;
   virtual const char* name() const = 0;  // "PDF", "HPGL", ...: for messages
-  // SVG, PNG, HPGL and the stepping tape hold one frame per file; PDF and JSON any number.
+  // SVG, PNG, HPGL and the stepping tape hold one frame per file; PDF, JSON and JSON Lines any number.
   virtual bool one_frame_per_file() const = 0;
   // How a page of this size is planned for this device. Throws DeviceError (a page the plotter does
   // not take).
@@ -75,13 +75,13 @@ class Device {
   virtual std::unique_ptr<DeviceFile> open(const std::filesystem::path& path) const = 0;
 };
 
-// The file types, by extension (any case): .pdf .svg .png .hpgl/.plt/.hpg .steps .json, and G-code
-// .gcode/.nc/.ngc.
-enum class DeviceKind { Pdf, Svg, Png, Hpgl, Steps, Json, Gcode };
+// The file types, by extension (any case): .pdf .svg .png .hpgl/.plt/.hpg .steps .json, JSON Lines
+// .jsonl, and G-code .gcode/.nc/.ngc.
+enum class DeviceKind { Pdf, Svg, Png, Hpgl, Steps, Json, JsonLines, Gcode };
 std::optional<DeviceKind> device_kind_for(const std::filesystem::path& path);
 const char* device_kind_name(DeviceKind kind);  // "PDF", "SVG", ..., "plotter-steps", "JSON"
 bool one_frame_per_file(DeviceKind kind);
-// "pdf, svg, png, hpgl (or .plt), steps, json, gcode (or .nc)": for messages.
+// "pdf, svg, png, hpgl (or .plt), steps, json, jsonl, gcode (or .nc)": for messages.
 const char* supported_extensions();
 
 }  // namespace hlr

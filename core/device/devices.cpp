@@ -24,6 +24,7 @@ std::optional<DeviceKind> device_kind_for(const fs::path& path) {
   if (ext == ".hpgl" || ext == ".plt" || ext == ".hpg") return DeviceKind::Hpgl;
   if (ext == ".steps") return DeviceKind::Steps;
   if (ext == ".json") return DeviceKind::Json;
+  if (ext == ".jsonl") return DeviceKind::JsonLines;
   if (ext == ".gcode" || ext == ".nc" || ext == ".ngc") return DeviceKind::Gcode;
   return std::nullopt;
 }
@@ -42,15 +43,21 @@ const char* device_kind_name(DeviceKind kind) {
       return "plotter-steps";
     case DeviceKind::Json:
       return "JSON";
+    case DeviceKind::JsonLines:
+      return "JSON Lines";
     case DeviceKind::Gcode:
       return "G-code";
   }
   return "?";
 }
 
-bool one_frame_per_file(DeviceKind kind) { return kind != DeviceKind::Pdf && kind != DeviceKind::Json; }
+bool one_frame_per_file(DeviceKind kind) {
+  return kind != DeviceKind::Pdf && kind != DeviceKind::Json && kind != DeviceKind::JsonLines;
+}
 
-const char* supported_extensions() { return "pdf, svg, png, hpgl (or .plt), steps, json, gcode (or .nc)"; }
+const char* supported_extensions() {
+  return "pdf, svg, png, hpgl (or .plt), steps, json, jsonl, gcode (or .nc)";
+}
 
 namespace {
 

@@ -37,13 +37,21 @@
 // to the first stroke, between strokes and back; lifts the strokes drawn and lift_lower_bound the fewest
 // possible; plot_seconds the estimate from the plotter's speeds; pen_order is JsonOptions::pen_order as
 // given; "segments" counts the frame's visible pieces (JsonFrame::segments).
-// Numbers are finite (a non-finite input is a DeviceError) and printed by nlohmann::json, whose
-// shortest-representation output reads back to the identical double. The text is deterministic:
-// keys in schema order, no time stamps.
+// Parts (JsonOptions::parts, the command's --json LIST): "camera", "layout", "segments", "strokes" (with
+// stroke_pens and the hidden lists) and "stats" may be left out; "frame" and "time" are always there.
+// All are written by default.
+// JSON Lines (JsonOptions::lines, a .jsonl file): no enclosing document; each frame is one line, a whole
+// object holding the document's "format", "title" and "page" followed by the frame's own members, so a
+// reader can stream the file or start at any line.
+// Numbers are finite (a non-finite input is a DeviceError) and printed as the shortest text that reads
+// back to the identical double (std::to_chars), whole numbers with ".0". The text is written straight
+// from the frame (core/device/json_text.hpp), deterministic: keys in schema order, no time stamps.
 #pragma once
 
 #include <filesystem>
+#include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "core/camera/camera.hpp"
@@ -63,12 +71,22 @@ struct JsonFrame {
   PagePlot plot;                          // the frame laid out on its page and pen-planned
 };
 
+// Which of a frame's members are written.
+struct JsonParts {
+  bool camera = true, layout = true, segments = true, strokes = true, stats = true;
+};
+
+// "all", or a comma-separated list of camera, layout, segments, strokes, stats; nullopt for anything else.
+std::optional<JsonParts> parse_json_parts(std::string_view list);
+
 struct JsonOptions {
   bool include_hidden = false;          // list hidden segments and hidden_strokes
   std::string pen_order = "optimized";  // reported in stats
   std::string title;                    // omitted when empty
   // true: indented, one segment or stroke per line; false: a single line without spaces.
   bool pretty = true;
+  JsonParts parts;     // what each frame holds
+  bool lines = false;  // JSON Lines: one compact frame per line, no enclosing document
 };
 
 // Throws DeviceError for a non-finite number (camera, segments, layout, strokes, stats), an object index
@@ -77,7 +95,8 @@ struct JsonOptions {
 std::string to_json_text(const std::vector<JsonFrame>& frames, const JsonOptions& options);
 
 // to_json_text() in pieces, for writing frame by frame: head + Σ (separator(i == 0) + frame_text) +
-// tail(count) is to_json_text()'s text. The head describes the first frame's page.
+// tail(count) is to_json_text()'s text. The head describes the first frame's page. In JSON Lines the
+// head, separators and tail are empty.
 std::string json_document_head(const PlotPage& first_page, const JsonOptions& options);
 std::string json_frame_text(const JsonFrame& frame, const JsonOptions& options);
 std::string json_frame_separator(bool first, const JsonOptions& options);

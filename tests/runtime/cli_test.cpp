@@ -95,6 +95,48 @@ TEST(Cli, WritesJsonFrames) {
   EXPECT_EQ(json["frames"][0]["segments"][0]["object"], "cube");
 }
 
+// A .jsonl file holds a frame a line, each whole: the document's format, title and page, then the same
+// members as the .json document's frame; --json keeps only the parts asked for.
+TEST(Cli, WritesJsonLinesAndChosenParts) {
+  const test::TempDir dir("runtime-cli-jsonl");
+  const std::string script = dir.write("scene.hls", kScene).string();
+  const std::string doc_path = (dir.path() / "lines.json").string();
+  const std::string lines_path = (dir.path() / "lines.jsonl").string();
+  ASSERT_EQ(run({script, "-o", doc_path, "--frames", "0-2"}).code, 0);
+  const Result r = run({script, "-o", lines_path, "--frames", "0-2"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  std::ifstream doc_in(doc_path);
+  const nlohmann::json doc = nlohmann::json::parse(doc_in);
+  std::ifstream lines_in(lines_path);
+  std::vector<nlohmann::json> lines;
+  for (std::string line; std::getline(lines_in, line);) lines.push_back(nlohmann::json::parse(line));
+  ASSERT_EQ(lines.size(), 3U);
+  for (std::size_t i = 0; i < lines.size(); ++i) {
+    nlohmann::json frame = lines[i];
+    EXPECT_EQ(frame["format"], "hlrscript.lines/1");
+    EXPECT_EQ(frame["page"], doc["page"]);
+    EXPECT_EQ(frame["title"], doc["title"]);
+    frame.erase("format");
+    frame.erase("page");
+    frame.erase("title");
+    EXPECT_EQ(frame, doc["frames"][i]) << "frame " << i;
+  }
+
+  const std::string some = (dir.path() / "some.json").string();
+  ASSERT_EQ(run({script, "-o", some, "--frames", "0-2", "--json", "strokes,stats"}).code, 0);
+  std::ifstream some_in(some);
+  const nlohmann::ordered_json chosen = nlohmann::ordered_json::parse(some_in);
+  std::vector<std::string> keys;
+  for (const auto& [key, value] : chosen["frames"][0].items()) keys.push_back(key);
+  EXPECT_EQ(keys, (std::vector<std::string>{"frame", "time", "strokes", "stroke_pens", "stats"}));
+  EXPECT_EQ(nlohmann::json(chosen["frames"][2]["strokes"]), doc["frames"][2]["strokes"]);
+
+  const Result bad = run({script, "-o", some, "--json", "strokes,colours"});
+  EXPECT_EQ(bad.code, 64);
+  EXPECT_NE(bad.err.find("--json takes all or a comma-separated list"), std::string::npos) << bad.err;
+  EXPECT_NE(bad.err.find("'strokes,colours'"), std::string::npos) << bad.err;
+}
+
 TEST(Cli, ABrokenScriptWritesNothing) {
   const test::TempDir dir("runtime-cli-broken");
   const std::string script =

@@ -65,7 +65,7 @@ class FramePipeline : public ::testing::Test {
 };
 
 TEST_F(FramePipeline, BytesDoNotDependOnJobs) {
-  const std::vector<std::string> patterns = {"all.pdf",          "all.json",          "f-{frame:02}.png",
+  const std::vector<std::string> patterns = {"all.pdf",          "all.json",          "all.jsonl",          "f-{frame:02}.png",
                                              "f-{frame:02}.svg", "f-{frame:02}.hpgl", "f-{frame:02}.steps"};
   for (const std::string& pattern : patterns) {
     const std::string ext = fs::path(pattern).extension().string().substr(1);
