@@ -1,7 +1,7 @@
 #include "core/device/gcode_device.hpp"
 
+#include <charconv>
 #include <cmath>
-#include <cstdio>
 #include <string>
 #include <vector>
 
@@ -17,10 +17,11 @@ std::string mm(double v) { return format_mm_for_message(v); }
 
 // A coordinate: three decimals, and 0.000 for anything that rounds to zero (GRBL reads -0.000 fine, but
 // a file that differs by a sign nobody can see is harder to compare).
+// std::to_chars rounds as printf's "%.3f" does, a tenth of the time.
 std::string fixed3(double v) {
   char buf[48];
-  std::snprintf(buf, sizeof buf, "%.3f", v);
-  std::string s = buf;
+  const auto [end, error] = std::to_chars(buf, buf + sizeof buf, v, std::chars_format::fixed, 3);
+  std::string s = error == std::errc() ? std::string(buf, end) : std::string("nan");
   if (s == "-0.000") s = "0.000";
   return s;
 }
