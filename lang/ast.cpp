@@ -2,6 +2,7 @@
 #include "lang/ast.hpp"
 
 #include <charconv>
+#include <cmath>
 #include <iterator>
 #include <string>
 
@@ -99,17 +100,23 @@ std::string paper_text(const PaperSpec& paper) {
 std::string pen_text(const std::optional<PenClause>& pen) { return pen ? " pen " + dump(*pen->number) : ""; }
 
 std::string item_text(const SolidItem& item) {
-  return std::visit(
-      Overloaded{
-          [](const VertexDecl& v) { return "(vertex " + v.id.text + " " + dump(*v.position) + ")"; },
-          [](const FaceDecl& f) {
-            std::string out = "(face" + ids_text(f.ids);
-            for (const auto& hole : f.holes) out += " (hole" + ids_text(hole.ids) + ")";
-            return out + ")";
-          },
-          [](const LineDecl& l) { return "(line " + l.from.text + " " + l.to.text + ")"; },
-      },
-      item.node);
+  return std::visit(Overloaded{
+                        [](const VertexDecl& v) {
+                          if (!v.literal) return "(vertex " + v.id.text + " " + dump(*v.position) + ")";
+                          // As the expression would print: a minus is a negation.
+                          std::string out = "(vertex " + v.id.text + " (vec";
+                          for (const double c : *v.literal)
+                            out += std::signbit(c) ? " (- " + number_text(-c) + ")" : " " + number_text(c);
+                          return out + "))";
+                        },
+                        [](const FaceDecl& f) {
+                          std::string out = "(face" + ids_text(f.ids);
+                          for (const auto& hole : f.holes) out += " (hole" + ids_text(hole.ids) + ")";
+                          return out + ")";
+                        },
+                        [](const LineDecl& l) { return "(line " + l.from.text + " " + l.to.text + ")"; },
+                    },
+                    item.node);
 }
 
 }  // namespace

@@ -121,7 +121,9 @@ struct VertexId {
 };
 struct VertexDecl {  // vertex ID = EXPR
   VertexId id;
-  ExprPtr position;
+  ExprPtr position;  // null when the position is `literal`
+  // The position when written as three plain numbers, `(1.5, -2, 0)` (grammar.hpp, literal_position).
+  std::optional<std::array<double, 3>> literal;
 };
 struct HoleLoop {  // hole ID ID ID ...
   std::vector<VertexId> ids;

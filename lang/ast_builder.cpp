@@ -251,11 +251,37 @@ struct action<g::id_name> {
 };
 
 template <>
+struct action<g::literal_position> {
+  template <typename Input>
+  static void apply(const Input& in, ParseState& s) {
+    // The rule matched "(" n "," n "," n ")" with blanks between: each number starts at the first
+    // character that is neither a bracket, a comma nor a blank.
+    const std::string_view text = in.string_view();
+    const char* p = text.data();
+    const char* const end = text.data() + text.size();
+    LiteralPosition position{};
+    for (double& v : position.xyz) {
+      while (p < end && (*p == '(' || *p == ',' || *p == ' ' || *p == '\t')) ++p;
+      const auto result = std::from_chars(p, end, v);
+      if (result.ec != std::errc())
+        throw SyntaxError{p, "number out of range: numbers must lie within about 1e308",
+                          "write a smaller number, or scale the scene"};
+      p = result.ptr;
+    }
+    s.items.emplace_back(position);
+  }
+};
+
+template <>
 struct action<g::vertex_decl> {
   template <typename Input>
   static void apply(const Input& in, ParseState& s) {
     const std::size_t first = first_child(s);
-    VertexDecl decl{take<VertexId>(s.items[first]), box(take<Expr>(s.items[first + 1]))};
+    VertexDecl decl{take<VertexId>(s.items[first]), nullptr, std::nullopt};
+    if (holds<LiteralPosition>(s.items[first + 1]))
+      decl.literal = take<LiteralPosition>(s.items[first + 1]).xyz;
+    else
+      decl.position = box(take<Expr>(s.items[first + 1]));
     replace_children(s, SolidItem{span_of(in, s), std::move(decl)});
   }
 };

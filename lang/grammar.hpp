@@ -238,7 +238,14 @@ struct id_name : seq< not_at< solid_word >, name > {};
 struct vertex_id : sor< id_number, id_name > {};
 struct vertex_decl_id : seq< vertex_id > {};
 struct vertex_eq : seq< one< '=' >, not_at< one< '=' > > > {};
-struct vertex_position : seq< expression > {};
+// A position written as three plain numbers on one line, `(1.5, -2, 0)`, and followed by the next item or
+// the body's end, is read straight into the declaration (ast.hpp, VertexDecl::literal) without building
+// an expression: generated scripts are mostly this. Anything else — `(1, 2, 3) + v`, names, spaces after
+// a minus — is an expression.
+struct literal_blanks : star< one< ' ', '\t' > > {};
+struct literal_number : seq< opt< one< '-' > >, digits, opt< fraction >, opt< exponent >, must< number_single_point, number_no_letter > > {};
+struct literal_position : seq< one< '(' >, literal_blanks, literal_number, literal_blanks, one< ',' >, literal_blanks, literal_number, literal_blanks, one< ',' >, literal_blanks, literal_number, literal_blanks, one< ')' >, at< sp, sor< key_vertex, key_face, key_line, one< '}' > > > > {};
+struct vertex_position : sor< literal_position, expression > {};
 struct vertex_decl : seq< key_vertex, sp, must< vertex_decl_id >, sp, must< vertex_eq >, sp, must< vertex_position > > {};
 
 struct face_ids : seq< vertex_id, star< sp, vertex_id > > {};

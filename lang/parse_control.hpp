@@ -16,35 +16,37 @@ inline constexpr const char* kTooDeep =
 
 template <typename Rule>
 struct control : tao::pegtl::normal<Rule> {
-  template <typename Input>
-  static void start(const Input& in, ParseState& s) {
-    s.marks.push_back({s.items.size(), in.current()});
+  // Every rule attempt passes here, millions for a large script, so it costs little: the height of the
+  // node stack at the start lives on the C++ stack for the rollback on failure, and only a rule with an
+  // action (whose children the action must find) records a mark.
+  template <tao::pegtl::apply_mode A, tao::pegtl::rewind_mode M, template <typename...> class Action,
+            template <typename...> class Control, typename Input>
+  [[nodiscard]] static bool match(Input& in, ParseState& s) {
+    constexpr bool has_action =
+        A == tao::pegtl::apply_mode::action && !std::is_base_of_v<tao::pegtl::nothing<Rule>, Action<Rule>>;
+    const std::size_t height = s.items.size();
+    const char* at = in.current();
     if constexpr (grammar::nests<Rule>) {
-      if (++s.prefix_depth + s.openers.size() > kMaxNesting) throw SyntaxError{in.current(), kTooDeep};
+      if (++s.prefix_depth + s.openers.size() > kMaxNesting) throw SyntaxError{at, kTooDeep};
     }
-  }
-
-  template <typename Input>
-  static void success(const Input& /*in*/, ParseState& s) {
-    const ParseState::Mark mark = s.marks.back();
-    s.marks.pop_back();
+    if constexpr (has_action) s.marks.push_back({height, at});
+    const bool matched = tao::pegtl::normal<Rule>::template match<A, M, Action, Control>(in, s);
+    if constexpr (has_action) s.marks.pop_back();
     if constexpr (grammar::nests<Rule>) --s.prefix_depth;
+    if (!matched) {
+      if (s.items.size() > height)
+        s.items.erase(s.items.begin() + static_cast<std::ptrdiff_t>(height), s.items.end());
+      s.last_failed_at = at;
+      return false;
+    }
     if constexpr (grammar::opens<Rule>) {
-      s.openers.push_back(mark.at);
-      if (s.prefix_depth + s.openers.size() > kMaxNesting) throw SyntaxError{mark.at, kTooDeep};
+      s.openers.push_back(at);
+      if (s.prefix_depth + s.openers.size() > kMaxNesting) throw SyntaxError{at, kTooDeep};
     }
     if constexpr (grammar::closes<Rule> != 0) {
       if (!s.openers.empty()) s.openers.pop_back();
     }
-  }
-
-  template <typename Input>
-  static void failure(const Input& /*in*/, ParseState& s) {
-    const ParseState::Mark mark = s.marks.back();
-    s.marks.pop_back();
-    if constexpr (grammar::nests<Rule>) --s.prefix_depth;
-    s.items.erase(s.items.begin() + static_cast<std::ptrdiff_t>(mark.items), s.items.end());
-    s.last_failed_at = mark.at;
+    return true;
   }
 
   template <typename Input>

@@ -6,6 +6,7 @@
 // nodes behind.
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <string_view>
 #include <variant>
@@ -40,9 +41,14 @@ struct PlotterName {
 };
 // `label ... at page (x, y)`: the point is on the page.
 struct PageMarker {};
+// A vertex position of three plain numbers (grammar.hpp, literal_position).
+struct LiteralPosition {
+  std::array<double, 3> xyz;
+};
 
 using Item = std::variant<Expr, Stmt, Token, Name, VertexId, Argument, Param, StringPart, CallSuffix,
-                          MemberSuffix, IndexSuffix, SolidItem, HoleLoop, Block, PenClause, PlotterName, PageMarker>;
+                          MemberSuffix, IndexSuffix, SolidItem, HoleLoop, Block, PenClause, PlotterName, PageMarker,
+                          LiteralPosition>;
 
 // Thrown by the control (a failed must<>) and by actions; the parser turns it into a Diagnostic.
 struct SyntaxError {
@@ -73,7 +79,10 @@ struct ParseState {
   const char* last_failed_at = nullptr;
 
   std::size_t offset(const char* p) const { return static_cast<std::size_t>(p - base); }
-  SourceSpan span(const char* begin, const char* end) const { return file->span(offset(begin), offset(end)); }
+  SourceSpan span(const char* begin, const char* end) const {
+    return file->span(offset(begin), offset(end), line_hint);
+  }
+  mutable std::size_t line_hint = 0;  // where SourceFile::position looks first
 };
 
 }  // namespace hlr::lang::detail

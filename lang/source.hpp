@@ -38,6 +38,11 @@ class SourceFile {
   // Position of a byte offset (clamped to the text's size).
   SourcePos position(std::size_t offset) const;
   SourceSpan span(std::size_t begin, std::size_t end) const;
+  // The same, starting the search for the line at `line_hint` (0-based) and leaving there the line
+  // found: a parser asks about offsets close to each other, usually on the same line or the next, and
+  // then no search is needed.
+  SourcePos position(std::size_t offset, std::size_t& line_hint) const;
+  SourceSpan span(std::size_t begin, std::size_t end, std::size_t& line_hint) const;
   // Line `line` (1-based) without its line terminator; empty when out of range.
   std::string_view line_text(std::uint32_t line) const;
   std::uint32_t line_count() const { return static_cast<std::uint32_t>(line_starts_.size()); }

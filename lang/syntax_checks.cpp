@@ -30,7 +30,7 @@ class Checker {
   void visit(const Stmt&, const SolidStmt& s) {
     for (const auto& option : s.options) expr(*option.value);  // names and values: the runtime's
     for (const auto& item : s.items) {
-      if (const auto* v = std::get_if<VertexDecl>(&item.node)) expr(*v->position);
+      if (const auto* v = std::get_if<VertexDecl>(&item.node); v && v->position) expr(*v->position);
     }
   }
   void visit(const Stmt&, const LetStmt& s) { expr(*s.value); }

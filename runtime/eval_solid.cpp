@@ -115,6 +115,11 @@ void Evaluator::exec_solid(const lang::SolidStmt& solid, const ScopePtr& scope) 
     std::visit(
         Overloaded{
             [&](const lang::VertexDecl& v) {
+              if (v.literal) {
+                const auto& [x, y, z] = *v.literal;
+                builder.add_vertex(vertex_key(v.id), Point3{x, y, z}, tag);
+                return;
+              }
               const Value p = eval(*v.position, scope);
               if (!p.is(ValueKind::Vector))
                 fail(v.position->span,

@@ -130,7 +130,7 @@ class Resolver {
                    [&](const lang::SolidStmt& s) {
                      options(s.options, scope);
                      for (const lang::SolidItem& item : s.items)
-                       if (const auto* v = std::get_if<lang::VertexDecl>(&item.node))
+                       if (const auto* v = std::get_if<lang::VertexDecl>(&item.node); v && v->position)
                          expr(*v->position, scope);
                      define(scope, s.name.text);
                    },

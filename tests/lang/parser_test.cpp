@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
+#include <cmath>
 #include <string>
 
 namespace hlr::lang {
@@ -78,6 +80,54 @@ TEST(Parser, DesignSketchAsAWhole) {
   EXPECT_EQ(span_text(text, script.statements[11].span), "style hidden dashed");
 }
 
+// A vertex position of three plain numbers on one line takes the literal path; anything more is an
+// expression. Either way the tree reads the same: the literal path is only a shortcut.
+TEST(Parser, LiteralVertexPositionsAreTheExpressionsTheyLookLike) {
+  // Whether the position took the literal path (and then has no expression), and its numbers.
+  struct Read {
+    bool literal = false, has_expression = false;
+    std::array<double, 3> xyz{};
+  };
+  const auto vertex = [](const std::string& position) {
+    const Script script = parse_ok("solid s {\n  vertex a = " + position + "\n  face a a a\n}\n");
+    const auto& v = std::get<VertexDecl>(std::get<SolidStmt>(script.statements.at(0).node).items.at(0).node);
+    return Read{v.literal.has_value(), v.position != nullptr, v.literal.value_or(std::array<double, 3>{})};
+  };
+  const auto dump_of = [](const std::string& position) {
+    return dump(parse_ok("solid s {\n  vertex a = " + position + "\n  face a a a\n}\n").statements.at(0));
+  };
+  for (const char* literal : {"(1, 2, 3)", "(-1.5, 0.25e2, -0)", "(1,2,3)", "(  7 ,\t8 , 9  )",
+                              "(1e-3, -2E+2, 3.0)", "(1, 2, 3)  # a comment"}) {
+    const Read v = vertex(literal);
+    EXPECT_TRUE(v.literal) << literal;
+    EXPECT_FALSE(v.has_expression) << literal;
+    // Broken across lines, the same position is an expression; its tree prints the same.
+    std::string split = literal;
+    split.insert(split.find(',') + 1, "\n");
+    EXPECT_FALSE(vertex(split).literal) << split;
+    EXPECT_EQ(dump_of(literal), dump_of(split)) << literal;
+  }
+  EXPECT_EQ(vertex("(-1.5, 0.25e2, -0)").xyz[1], 25.0);
+  EXPECT_TRUE(std::signbit(vertex("(-1.5, 0.25e2, -0)").xyz[2]));
+  for (const char* expression : {"(1, 2, 3) + (0, 0, 1)", "(x, 2, 3)", "(- 1, 2, 3)", "(1, 2, 3) then 4",
+                                 "(1, 2, 3 + 1)", "((1), 2, 3)"}) {
+    const std::string text = "let x = 1\nsolid s {\n  vertex a = " + std::string(expression) + "\n}\n";
+    const ParseResult r = parse(text, "t.hls", 0);
+    if (!r.script) continue;  // an error (then 4) is the expression grammar's
+    const auto& v =
+        std::get<VertexDecl>(std::get<SolidStmt>(r.script->statements.at(1).node).items.at(0).node);
+    EXPECT_FALSE(v.literal) << expression;
+    EXPECT_NE(v.position, nullptr) << expression;
+  }
+  // A malformed number is the same error either way.
+  const ParseResult bad = parse("solid s {\n  vertex a = (1.2.3, 0, 0)\n}\n", "t.hls", 0);
+  ASSERT_FALSE(bad.diagnostics.empty());
+  EXPECT_NE(bad.diagnostics[0].message.find("at most one decimal point"), std::string::npos);
+  const ParseResult huge = parse("solid s {\n  vertex a = (1e999, 0, 0)\n}\n", "t.hls", 0);
+  ASSERT_FALSE(huge.diagnostics.empty());
+  EXPECT_NE(huge.diagnostics[0].message.find("number out of range"), std::string::npos);
+}
+
 TEST(Parser, SolidNodes) {
   const std::string text =
       "solid lblock {\n  vertex 1 = (0, 10, 0)\n  vertex top = (0, 10, 5)\n"
@@ -91,11 +141,10 @@ TEST(Parser, SolidNodes) {
   EXPECT_TRUE(v1.id.is_number);
   EXPECT_EQ(v1.id.number, 1);
   EXPECT_EQ(span_text(text, solid.items[0].span), "vertex 1 = (0, 10, 0)");
-  const auto& pos = std::get<VectorLit>(v1.position->node);
-  EXPECT_EQ(std::get<NumberLit>(pos.components[1]->node).value, 10.0);
-  EXPECT_EQ(v1.position->span.begin.line, 2U);
-  EXPECT_EQ(v1.position->span.begin.column, 14U);
-  EXPECT_EQ(v1.position->span.end.column, 24U);  // one past the ")"
+  // Three plain numbers are read straight into the declaration.
+  ASSERT_TRUE(v1.literal);
+  EXPECT_EQ(*v1.literal, (std::array<double, 3>{0, 10, 0}));
+  EXPECT_EQ(v1.position, nullptr);
   const auto& vtop = std::get<VertexDecl>(solid.items[1].node);
   EXPECT_FALSE(vtop.id.is_number);
   EXPECT_EQ(vtop.id.text, "top");
