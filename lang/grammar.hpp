@@ -44,6 +44,8 @@
 
 #include <tao/pegtl.hpp>
 
+#include <string_view>
+
 namespace hlr::lang::grammar {
 
 using namespace tao::pegtl;  // NOLINT: the grammar reads as PEG, as in PEGTL's own examples
@@ -87,9 +89,33 @@ struct key_not : key< TAO_PEGTL_STRING( "not" ) > {};
 struct key_true : key< TAO_PEGTL_STRING( "true" ) > {};
 struct key_false : key< TAO_PEGTL_STRING( "false" ) > {};
 
-struct reserved : sor< key_solid, key_let, key_def, key_return, key_for, key_in, key_if, key_else, key_draw,
-                       key_at, key_camera, key_animate, key_output, key_paper, key_style, key_include,
-                       key_then, key_and, key_or, key_not, key_true, key_false > {};
+// clang-format on
+
+// One of the words above, whole (as sor< key_solid, key_let, ... > would match): the identifier is read
+// once and looked up, rather than each word tried in turn, since this runs before every name. It is an
+// `identifier` to the grammar's analysis (it matches the same text or less).
+struct reserved : identifier {
+  template <typename ParseInput>
+  [[nodiscard]] static bool match(ParseInput& in) {
+    static constexpr std::string_view kWords[] = {
+        "solid", "let",    "def",     "return", "for",   "in",      "if",   "else", "draw", "at",    "camera",
+        "animate", "output", "paper", "style",  "include", "then", "and",  "or",   "not",  "true", "false"};
+    const char* const begin = in.current();
+    const char* p = begin;
+    while (p < in.end() && ((*p >= 'a' && *p <= 'z') || (*p >= 'A' && *p <= 'Z') || (*p >= '0' && *p <= '9') ||
+                            *p == '_'))
+      ++p;
+    const std::string_view word(begin, static_cast<std::size_t>(p - begin));
+    for (const std::string_view w : kWords)
+      if (w == word) {
+        in.bump(word.size());
+        return true;
+      }
+    return false;
+  }
+};
+
+// clang-format off
 
 // Contextual words: keywords only where they appear.
 struct key_vertex : key< TAO_PEGTL_STRING( "vertex" ) > {};
