@@ -602,10 +602,14 @@ struct action<g::include_stmt> {
 
 }  // namespace
 
-StatementParse parse_statement(const SourceFile& file, std::size_t offset) {
-  ParseState state;
+StatementParse parse_statement(const SourceFile& file, std::size_t offset, ParseState& state) {
   state.file = &file;
   state.base = file.text().data();
+  state.items.clear();
+  state.marks.clear();
+  state.openers.clear();
+  state.prefix_depth = 0;
+  state.last_failed_at = nullptr;
   tao::pegtl::memory_input<tao::pegtl::tracking_mode::lazy> in(state.base + offset,
                                                                state.base + file.text().size(), file.name());
   StatementParse result;

@@ -18,6 +18,8 @@ struct StatementParse {
 };
 
 // Parses the statement that starts at `offset` (which must not be padding or the end of the text).
-StatementParse parse_statement(const SourceFile& file, std::size_t offset);
+// `state` is the parser's working memory, reused from one statement to the next of a file so that its
+// stacks keep their capacity; it is reset here.
+StatementParse parse_statement(const SourceFile& file, std::size_t offset, ParseState& state);
 
 }  // namespace hlr::lang::detail

@@ -91,15 +91,22 @@ struct key_false : key< TAO_PEGTL_STRING( "false" ) > {};
 
 // clang-format on
 
-// One of the words above, whole (as sor< key_solid, key_let, ... > would match): the identifier is read
-// once and looked up, rather than each word tried in turn, since this runs before every name. It is an
-// `identifier` to the grammar's analysis (it matches the same text or less).
-struct reserved : identifier {
+// The text of a keyword rule: "solid" for key_solid.
+template <char... Cs>
+inline constexpr char kWordText[] = {Cs...};
+template <char... Cs>
+constexpr std::string_view word_of(const key<ascii::string<Cs...>>*) {
+  return {kWordText<Cs...>, sizeof...(Cs)};
+}
+
+// One of the keywords Keys, whole — what sor< Keys... > matches — found by reading the identifier once and
+// looking it up rather than by trying each word in turn: `reserved` runs before every name. To the
+// grammar's analysis it is an `identifier` (it matches the same text or none).
+template <typename... Keys>
+struct any_word : identifier {
   template <typename ParseInput>
   [[nodiscard]] static bool match(ParseInput& in) {
-    static constexpr std::string_view kWords[] = {
-        "solid", "let",    "def",     "return", "for",   "in",      "if",   "else", "draw", "at",    "camera",
-        "animate", "output", "paper", "style",  "include", "then", "and",  "or",   "not",  "true", "false"};
+    static constexpr std::string_view kWords[] = {word_of(static_cast<const Keys*>(nullptr))...};
     const char* const begin = in.current();
     const char* p = begin;
     while (p < in.end() && ((*p >= 'a' && *p <= 'z') || (*p >= 'A' && *p <= 'Z') || (*p >= '0' && *p <= '9') ||
@@ -116,6 +123,10 @@ struct reserved : identifier {
 };
 
 // clang-format off
+
+struct reserved : any_word< key_solid, key_let, key_def, key_return, key_for, key_in, key_if, key_else, key_draw,
+                            key_at, key_camera, key_animate, key_output, key_paper, key_style, key_include,
+                            key_then, key_and, key_or, key_not, key_true, key_false > {};
 
 // Contextual words: keywords only where they appear.
 struct key_vertex : key< TAO_PEGTL_STRING( "vertex" ) > {};

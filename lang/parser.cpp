@@ -238,8 +238,9 @@ ParseResult parse(std::string_view source, std::string file_name, FileId file_id
   Script script;
   script.file = file_id;
   std::size_t pos = skip_padding(text, 0);
+  detail::ParseState state;
   while (pos < text.size()) {
-    detail::StatementParse parsed = detail::parse_statement(*file, pos);
+    detail::StatementParse parsed = detail::parse_statement(*file, pos, state);
     if (parsed.statement) {
       script.statements.push_back(std::move(*parsed.statement));
       pos = skip_padding(text, parsed.end);

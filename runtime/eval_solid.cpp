@@ -4,7 +4,6 @@
 // reported together; warnings (a reoriented face) are kept with the frame and printed once.
 #include <algorithm>
 #include <array>
-#include <map>
 #include <string_view>
 
 #include "core/format_number.hpp"
@@ -32,14 +31,25 @@ std::vector<std::string> vertex_keys(const std::vector<lang::VertexId>& ids) {
   return out;
 }
 
+constexpr std::size_t kFewIds = 16;
+
 // A face whose id list comes back to a vertex it left (not just a vertex repeated in a row) is a loop
 // in the theses' style (Desens' LSTFAC): edges walked both ways are bridges or lines on the face.
 bool revisits_a_vertex(const std::vector<std::string>& ids) {
-  std::map<std::string, int> seen;
+  // The walk with repeats in a row collapsed and, when written closed (1 2 3 1), the closing id dropped.
+  std::vector<std::string_view> walk;
+  walk.reserve(ids.size());
   for (std::size_t i = 0; i < ids.size(); ++i)
-    if (i == 0 || ids[i] != ids[i - 1]) ++seen[ids[i]];
-  if (ids.size() > 1 && ids.front() == ids.back()) --seen[ids.front()];  // written closed: 1 2 3 1
-  return std::any_of(seen.begin(), seen.end(), [](const auto& e) { return e.second > 1; });
+    if (i == 0 || ids[i] != ids[i - 1]) walk.push_back(ids[i]);
+  if (ids.size() > 1 && ids.front() == ids.back() && walk.size() > 1) walk.pop_back();
+  if (walk.size() <= kFewIds) {  // most faces: compare pairs, no sorting
+    for (std::size_t i = 0; i < walk.size(); ++i)
+      for (std::size_t j = i + 1; j < walk.size(); ++j)
+        if (walk[i] == walk[j]) return true;
+    return false;
+  }
+  std::sort(walk.begin(), walk.end());
+  return std::adjacent_find(walk.begin(), walk.end()) != walk.end();
 }
 
 // ---- options: solid NAME (crease: 30, planarity: 0.003, crossing_holes: true, fix_winding: false) ----

@@ -43,9 +43,9 @@ def grammar_words(grammar_hpp):
     text = open(grammar_hpp, encoding="utf-8").read()
     words = set(re.findall(r'key<\s*TAO_PEGTL_STRING\(\s*"(\w+)"\s*\)\s*>', text))
     rule_word = dict(re.findall(r'struct\s+(key_\w+)\s*:\s*key<\s*TAO_PEGTL_STRING\(\s*"(\w+)"', text))
-    reserved_rule = re.search(r'struct\s+reserved\s*:\s*sor<(.*?)>\s*\{\}', text, re.S)
+    reserved_rule = re.search(r'struct\s+reserved\s*:\s*(?:sor|any_word)<(.*?)>\s*\{\}', text, re.S)
     if not reserved_rule:
-        fail("lang/grammar.hpp: no `struct reserved : sor< ... >` rule found")
+        fail("lang/grammar.hpp: no `struct reserved : any_word< ... >` rule found")
         return words, set()
     reserved = {rule_word[name] for name in re.findall(r'key_\w+', reserved_rule.group(1))}
     return words, reserved
