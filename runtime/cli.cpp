@@ -184,8 +184,10 @@ std::string creation_date_from_environment() {
 
 // Load → evaluate frame 0 (animation length, camera, output name) → select frames → the frame pipeline
 // (runtime/frame_pipeline.hpp) → report.
+// `releasable` is the same program when nothing else will evaluate it (not the REPL's): a run of frame 0
+// alone then frees its syntax tree before the hidden lines (Program::release_syntax).
 int run_program(const Program& program, const CliOptions& o, std::ostream& out, std::ostream& err,
-                Clock::time_point start) {
+                Clock::time_point start, Program* releasable = nullptr) {
   const std::string& name = program.main().source->name();
   ProgressLine progress(err, o.progress);
   std::vector<int> asked;  // the frames selected, once known
@@ -235,6 +237,7 @@ int run_program(const Program& program, const CliOptions& o, std::ostream& out, 
     }
     const std::string cameras = join_cameras(first);
     const std::size_t objects = first.scene.objects.size();
+    if (releasable && frames.size() == 1 && frames[0] == 0) releasable->release_syntax();
 
     const PipelineResult result = run_pipeline(program, frames, fps, options, std::move(first));
     progress.clear();
@@ -299,7 +302,7 @@ int run_demo(CliOptions o, std::ostream& out, std::ostream& err) {
   }
   if (!o.output) o.output = "carrier.pdf";
   o.frames.reset();
-  return run_program(*program, o, out, err, start);
+  return run_program(*program, o, out, err, start, program.get());
 }
 
 int print_help(const std::string& topic, std::ostream& out, std::ostream& err) {
@@ -339,7 +342,7 @@ int run_script(const CliOptions& o, std::ostream& out, std::ostream& err,
   if (!program->parsed())
     print_diagnostics(err, program->syntax_errors(), program->sources());
   else
-    code = run_program(*program, o, out, err, start);
+    code = run_program(*program, o, out, err, start, program.get());
   if (inputs) *inputs = program->sources().paths();
   return code;
 }

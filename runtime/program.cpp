@@ -1,6 +1,7 @@
 #include "runtime/program.hpp"
 
 #include <chrono>
+#include <stdexcept>
 
 #include "runtime/big_stack.hpp"
 #include "runtime/evaluator.hpp"
@@ -36,8 +37,14 @@ std::unique_ptr<Program> Program::from_text(const std::string& display_name, con
 
 FrameScene Program::evaluate(const FrameTime& time) const { return evaluate(time, nullptr); }
 
+void Program::release_syntax() {
+  sources_->release_syntax();
+  released_ = true;
+}
+
 FrameScene Program::evaluate(const FrameTime& time,
                              const std::function<void(const Evaluator&)>& inspect) const {
+  if (released_) throw std::logic_error("Program::evaluate after release_syntax()");
   if (!parsed())
     throw EvalError(main_->diagnostics, ErrorKind::Script,
                     std::to_string(main_->diagnostics.size()) + " syntax errors in " + main_->source->name());

@@ -49,6 +49,10 @@ class Program {
   FrameScene evaluate(const FrameTime& time, const std::function<void(const Evaluator&)>& inspect) const;
 
   const SourceTable& sources() const { return *sources_; }
+  // Frees the syntax trees of the script and its includes, keeping their text for messages: for a run
+  // whose last evaluation is done, so that the hidden lines do not share the peak memory with a tree
+  // that, for a generated scene, is larger than the scene's solids. evaluate() throws from then on.
+  void release_syntax();
   // The run's limits (--limit, --frame-timeout), for every evaluation from here on.
   void set_limits(const Limits& limits) { limits_ = limits; }
   const Limits& limits() const { return limits_; }
@@ -61,6 +65,7 @@ class Program {
   const SourceEntry* main_;
   std::vector<lang::Diagnostic> static_errors_;
   bool uses_frames_ = false;
+  bool released_ = false;
   Limits limits_;
 };
 

@@ -94,6 +94,11 @@ void SourceTable::add_input(const fs::path& path) const {
   if (std::find(inputs_.begin(), inputs_.end(), path) == inputs_.end()) inputs_.push_back(path);
 }
 
+void SourceTable::release_syntax() {
+  std::lock_guard lock(mutex_);
+  for (SourceEntry& entry : entries_) entry.script.reset();
+}
+
 std::string format_diagnostic(const lang::Diagnostic& diagnostic, const SourceTable& sources) {
   const lang::SourceFile* file = sources.file(diagnostic.span.file);
   if (!file) return std::string(lang::to_string(diagnostic.severity)) + ": " + diagnostic.message + "\n";

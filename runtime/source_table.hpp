@@ -49,6 +49,8 @@ class SourceTable {
   std::vector<std::filesystem::path> paths() const;
   // A file read by a built-in (import): one more input of the run.
   void add_input(const std::filesystem::path& path) const;
+  // Frees every file's syntax tree; their text stays, for messages (Program::release_syntax).
+  void release_syntax();
 
  private:
   const SourceEntry* add(std::filesystem::path path, const std::string& display_name,

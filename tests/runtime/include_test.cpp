@@ -27,6 +27,25 @@ TEST(Include, RelativeToTheIncludingFileAndOncePerEvaluation) {
   EXPECT_EQ(program->sources().file(2)->name(), "lib/more/posts.hls");
 }
 
+// A one-frame run frees the trees of the script and its includes before the hidden lines: the text
+// stays (messages still quote their lines), evaluating again is refused.
+TEST(Include, ReleasingTheSyntaxKeepsTheText) {
+  const test::TempDir dir("runtime-include-release");
+  dir.write("lib.hls", "def slab(w) = box(w, w, 0.5)\n");
+  const auto program = Program::load(
+      dir.write("scene.hls", "include \"lib.hls\"\ndraw slab(3)\ncamera c = orbit()\n"), "scene.hls");
+  const FrameScene scene = program->evaluate({});
+  ASSERT_EQ(scene.scene.objects.size(), 1U);
+  program->release_syntax();
+  EXPECT_FALSE(program->sources().entry(0)->script.has_value());
+  EXPECT_FALSE(program->sources().entry(1)->script.has_value());
+  EXPECT_EQ(program->sources().file(1)->line_text(1), "def slab(w) = box(w, w, 0.5)");
+  const lang::Diagnostic d{lang::Severity::Warning, scene.cameras.at(0).span, "a note on the camera", "", {}};
+  EXPECT_NE(format_diagnostic(d, program->sources()).find("camera c = orbit()"), std::string::npos);
+  EXPECT_THROW(program->evaluate({}), std::logic_error);
+  EXPECT_EQ(scene.scene.objects[0].solid->faces.size(), 6U) << "the frame's solids outlive the tree";
+}
+
 std::string printed(const Program& program) {
   try {
     program.evaluate({});

@@ -11,37 +11,13 @@
 #include <vector>
 
 #include "core/device/cairo_device.hpp"
+#include "tests/support/png_decode.hpp"
 
 namespace hlr {
 namespace {
 
-struct Decoded {
-  int colour_type = -1;
-  long width = 0, height = 0;
-  std::vector<std::uint8_t> rgba;
-  const std::uint8_t* at(long x, long y) const {
-    return &rgba[static_cast<std::size_t>(4 * (y * width + x))];
-  }
-};
-
-Decoded decode(const std::string& bytes) {
-  Decoded d;
-  if (bytes.size() > 25) d.colour_type = static_cast<unsigned char>(bytes[25]);  // IHDR's colour type
-  png_image image;
-  std::memset(&image, 0, sizeof image);
-  image.version = PNG_IMAGE_VERSION;
-  if (!png_image_begin_read_from_memory(&image, bytes.data(), bytes.size())) {
-    ADD_FAILURE() << "libpng cannot read it: " << image.message;
-    return d;
-  }
-  image.format = PNG_FORMAT_RGBA;
-  d.width = image.width;
-  d.height = image.height;
-  d.rgba.resize(PNG_IMAGE_SIZE(image));
-  if (!png_image_finish_read(&image, nullptr, d.rgba.data(), 0, nullptr))
-    ADD_FAILURE() << "libpng cannot read it: " << image.message;
-  return d;
-}
+using Decoded = test::DecodedPng;
+Decoded decode(const std::string& bytes) { return test::decode_png(bytes); }
 
 PlotStroke line(Point2 a, Point2 b, int pen, StrokeLayer layer = StrokeLayer::Visible) {
   PlotStroke s;

@@ -8,34 +8,13 @@
 #include <string>
 #include <vector>
 
+#include "tests/support/png_decode.hpp"
+
 namespace hlr {
 namespace {
 
-struct Decoded {
-  int colour_type = -1;
-  long width = 0, height = 0;
-  std::vector<std::uint8_t> rgba;  // straight (not premultiplied) RGBA, row by row
-};
-
-// Reads the file back with libpng's own reader, as RGBA, and the colour type its header declares.
-Decoded decode(const std::string& bytes) {
-  Decoded d;
-  if (bytes.size() > 25) d.colour_type = static_cast<unsigned char>(bytes[25]);  // IHDR's colour type
-  png_image image;
-  std::memset(&image, 0, sizeof image);
-  image.version = PNG_IMAGE_VERSION;
-  if (!png_image_begin_read_from_memory(&image, bytes.data(), bytes.size())) {
-    ADD_FAILURE() << "libpng cannot read it: " << image.message;
-    return d;
-  }
-  image.format = PNG_FORMAT_RGBA;
-  d.width = image.width;
-  d.height = image.height;
-  d.rgba.resize(PNG_IMAGE_SIZE(image));
-  if (!png_image_finish_read(&image, nullptr, d.rgba.data(), 0, nullptr))
-    ADD_FAILURE() << "libpng cannot read it: " << image.message;
-  return d;
-}
+using Decoded = test::DecodedPng;
+Decoded decode(const std::string& bytes) { return test::decode_png(bytes); }
 
 std::vector<int> pixel(const Decoded& d, long x, long y) {
   const std::uint8_t* p = &d.rgba[static_cast<std::size_t>(4 * (y * d.width + x))];
