@@ -4,6 +4,7 @@
 #include <charconv>
 #include <cmath>
 #include <iterator>
+#include <span>
 #include <string>
 
 #include "lang/overloaded.hpp"
@@ -69,9 +70,9 @@ std::string quoted(const std::string& text) {
   return out + "\"";
 }
 
-std::string ids_text(const std::vector<VertexId>& ids) {
+std::string ids_text(const SolidBody& body, std::span<const std::uint32_t> ids) {
   std::string out;
-  for (const auto& id : ids) out += " " + id.text;
+  for (const std::uint32_t id : ids) out += " " + body.ids()[id];
   return out;
 }
 
@@ -99,24 +100,42 @@ std::string paper_text(const PaperSpec& paper) {
 
 std::string pen_text(const std::optional<PenClause>& pen) { return pen ? " pen " + dump(*pen->number) : ""; }
 
-std::string item_text(const SolidItem& item) {
-  return std::visit(Overloaded{
-                        [](const VertexDecl& v) {
-                          if (!v.literal) return "(vertex " + v.id.text + " " + dump(*v.position) + ")";
-                          // As the expression would print: a minus is a negation.
-                          std::string out = "(vertex " + v.id.text + " (vec";
-                          for (const double c : *v.literal)
-                            out += std::signbit(c) ? " (- " + number_text(-c) + ")" : " " + number_text(c);
-                          return out + "))";
-                        },
-                        [](const FaceDecl& f) {
-                          std::string out = "(face" + ids_text(f.ids);
-                          for (const auto& hole : f.holes) out += " (hole" + ids_text(hole.ids) + ")";
-                          return out + ")";
-                        },
-                        [](const LineDecl& l) { return "(line " + l.from.text + " " + l.to.text + ")"; },
-                    },
-                    item.node);
+// The items in the order written, each as an S-expression.
+std::string body_text(const SolidBody& body) {
+  std::string out;
+  std::size_t vertex = 0, face = 0, line = 0;
+  for (const SolidBody::Item& item : body.items()) {
+    switch (item.kind) {
+      case SolidBody::ItemKind::Vertex: {
+        const SolidBody::Vertex& v = body.vertices()[vertex++];
+        out += " (vertex " + body.ids()[v.id] + " ";
+        if (v.position != SolidBody::kLiteral) {
+          out += dump(body.position(v)) + ")";
+          break;
+        }
+        // As the expression would print: a minus is a negation.
+        out += "(vec";
+        for (const double c : v.at)
+          out += std::signbit(c) ? " (- " + number_text(-c) + ")" : " " + number_text(c);
+        out += "))";
+        break;
+      }
+      case SolidBody::ItemKind::Face: {
+        out += " (face" + ids_text(body, body.ring(face, 0));
+        for (std::size_t r = 1; r < body.ring_count(face); ++r)
+          out += " (hole" + ids_text(body, body.ring(face, r)) + ")";
+        out += ")";
+        ++face;
+        break;
+      }
+      case SolidBody::ItemKind::Line: {
+        const auto& [from, to] = body.lines()[line++];
+        out += " (line " + body.ids()[from] + " " + body.ids()[to] + ")";
+        break;
+      }
+    }
+  }
+  return out;
 }
 
 }  // namespace
@@ -172,7 +191,7 @@ std::string dump(const Stmt& stmt) {
           [](const SolidStmt& s) {
             std::string out = "(solid " + s.name.text;
             if (!s.options.empty()) out += " (options" + arguments_text(s.options) + ")";
-            for (const auto& item : s.items) out += " " + item_text(item);
+            out += body_text(s.body);
             return out + ")";
           },
           [](const LetStmt& s) { return "(let " + s.name.text + " " + dump(*s.value) + ")"; },

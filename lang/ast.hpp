@@ -16,6 +16,7 @@
 #include <variant>
 #include <vector>
 
+#include "lang/solid_body.hpp"
 #include "lang/source.hpp"
 
 namespace hlr::lang {
@@ -110,38 +111,6 @@ struct Expr {
   std::uint32_t height = 1;  // nodes on the longest path down from here, this one included
 };
 
-// ---- solids ------------------------------------------------------------------------------------
-
-// A vertex id: a whole number ("12") or a name ("top"). `text` is as written.
-struct VertexId {
-  std::string text;
-  bool is_number = false;
-  std::int64_t number = 0;  // value when is_number
-  SourceSpan span;
-};
-struct VertexDecl {  // vertex ID = EXPR
-  VertexId id;
-  ExprPtr position;  // null when the position is `literal`
-  // The position when written as three plain numbers, `(1.5, -2, 0)` (grammar.hpp, literal_position).
-  std::optional<std::array<double, 3>> literal;
-};
-struct HoleLoop {  // hole ID ID ID ...
-  std::vector<VertexId> ids;
-  SourceSpan span;
-};
-struct FaceDecl {  // face ID ID ID ... [hole ...]...
-  std::vector<VertexId> ids;
-  std::vector<HoleLoop> holes;
-};
-struct LineDecl {  // line ID ID
-  VertexId from;
-  VertexId to;
-};
-struct SolidItem {
-  SourceSpan span;
-  std::variant<VertexDecl, FaceDecl, LineDecl> node;
-};
-
 // ---- statements --------------------------------------------------------------------------------
 
 struct Stmt;
@@ -156,7 +125,7 @@ enum class Orientation { Unspecified, Landscape, Portrait };
 struct SolidStmt {
   Name name;
   std::vector<Argument> options;  // as written, labels and spans kept; the runtime checks them
-  std::vector<SolidItem> items;
+  SolidBody body;
 };
 struct LetStmt {
   Name name;

@@ -228,17 +228,19 @@ template <> struct action<g::then_expr> : fold_binary {};
 
 // ---- solids -------------------------------------------------------------------------------------
 
+// Vertex ids are interned in the block being read (ParseState::solid): a number by its value, so that
+// "01" and "1" are one vertex, a name as written.
 template <>
 struct action<g::id_number> {
   template <typename Input>
   static void apply(const Input& in, ParseState& s) {
     const std::string_view text = in.string_view();
-    VertexId id{std::string(text), true, 0, span_of(in, s)};
-    if (std::from_chars(text.data(), text.data() + text.size(), id.number).ec != std::errc()) {
+    std::int64_t number = 0;
+    if (std::from_chars(text.data(), text.data() + text.size(), number).ec != std::errc()) {
       throw SyntaxError{in.begin(), "vertex id too large: numeric ids must be below 2^63",
                         "use a smaller number or a name"};
     }
-    s.items.emplace_back(std::move(id));
+    s.items.emplace_back(VertexRef{s.solid.intern(std::to_string(number))});
   }
 };
 
@@ -246,7 +248,7 @@ template <>
 struct action<g::id_name> {
   template <typename Input>
   static void apply(const Input& in, ParseState& s) {
-    s.items.emplace_back(VertexId{std::string(in.string_view()), false, 0, span_of(in, s)});
+    s.items.emplace_back(VertexRef{s.solid.intern(in.string_view())});
   }
 };
 
@@ -277,22 +279,23 @@ struct action<g::vertex_decl> {
   template <typename Input>
   static void apply(const Input& in, ParseState& s) {
     const std::size_t first = first_child(s);
-    VertexDecl decl{take<VertexId>(s.items[first]), nullptr, std::nullopt};
+    const std::uint32_t id = std::get<VertexRef>(s.items[first]).id;
+    const auto begin = s.offset32(in.begin()), end = s.offset32(in.end());
     if (holds<LiteralPosition>(s.items[first + 1]))
-      decl.literal = take<LiteralPosition>(s.items[first + 1]).xyz;
+      s.solid.add_vertex(id, std::get<LiteralPosition>(s.items[first + 1]).xyz, begin, end);
     else
-      decl.position = box(take<Expr>(s.items[first + 1]));
-    replace_children(s, SolidItem{span_of(in, s), std::move(decl)});
+      s.solid.add_vertex(id, box(take<Expr>(s.items[first + 1])), begin, end);
+    s.items.resize(first);
   }
 };
 
 template <>
 struct action<g::hole_clause> {
   template <typename Input>
-  static void apply(const Input& in, ParseState& s) {
-    HoleLoop hole{{}, span_of(in, s)};
+  static void apply(const Input& /*in*/, ParseState& s) {
+    HoleRefs hole;
     for (std::size_t i = first_child(s); i < s.items.size(); ++i)
-      hole.ids.push_back(take<VertexId>(s.items[i]));
+      hole.ids.push_back(std::get<VertexRef>(s.items[i]).id);
     replace_children(s, std::move(hole));
   }
 };
@@ -301,15 +304,20 @@ template <>
 struct action<g::face_decl> {
   template <typename Input>
   static void apply(const Input& in, ParseState& s) {
-    FaceDecl face;
+    std::vector<std::uint32_t> refs, ring_ends;
     for (std::size_t i = first_child(s); i < s.items.size(); ++i) {
-      if (holds<VertexId>(s.items[i])) {
-        face.ids.push_back(take<VertexId>(s.items[i]));
-      } else {
-        face.holes.push_back(take<HoleLoop>(s.items[i]));
+      if (const auto* ref = std::get_if<VertexRef>(&s.items[i])) {
+        refs.push_back(ref->id);
+        continue;
       }
+      if (ring_ends.empty()) ring_ends.push_back(static_cast<std::uint32_t>(refs.size()));
+      const HoleRefs& hole = std::get<HoleRefs>(s.items[i]);
+      refs.insert(refs.end(), hole.ids.begin(), hole.ids.end());
+      ring_ends.push_back(static_cast<std::uint32_t>(refs.size()));
     }
-    replace_children(s, SolidItem{span_of(in, s), std::move(face)});
+    if (ring_ends.empty()) ring_ends.push_back(static_cast<std::uint32_t>(refs.size()));
+    s.solid.add_face(refs, ring_ends, s.offset32(in.begin()), s.offset32(in.end()));
+    s.items.resize(first_child(s));
   }
 };
 
@@ -318,8 +326,18 @@ struct action<g::line_decl> {
   template <typename Input>
   static void apply(const Input& in, ParseState& s) {
     const std::size_t first = first_child(s);
-    LineDecl line{take<VertexId>(s.items[first]), take<VertexId>(s.items[first + 1])};
-    replace_children(s, SolidItem{span_of(in, s), std::move(line)});
+    s.solid.add_line(std::get<VertexRef>(s.items[first]).id, std::get<VertexRef>(s.items[first + 1]).id,
+                     s.offset32(in.begin()), s.offset32(in.end()));
+    s.items.resize(first);
+  }
+};
+
+// A new block starts empty: a failed statement before may have left items.
+template <>
+struct action<g::solid_open> {
+  template <typename Input>
+  static void apply(const Input& /*in*/, ParseState& s) {
+    s.solid = SolidBody(s.file->id());
   }
 };
 
@@ -327,12 +345,12 @@ template <>
 struct action<g::solid_stmt> {
   template <typename Input>
   static void apply(const Input& in, ParseState& s) {
-    make_statement(span_of(in, s), s, [](auto it, auto end) {
-      SolidStmt solid{take<Name>(*it), {}, {}};
+    make_statement(span_of(in, s), s, [&](auto it, auto end) {
+      SolidStmt solid{take<Name>(*it), {}, std::move(s.solid)};
       for (++it; it != end && holds<Argument>(*it); ++it) solid.options.push_back(take<Argument>(*it));
-      for (; it != end; ++it) solid.items.push_back(take<SolidItem>(*it));
       return solid;
     });
+    s.solid = SolidBody();
   }
 };
 

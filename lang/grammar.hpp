@@ -46,6 +46,8 @@
 
 #include <string_view>
 
+#include "lang/plain_solid_item.hpp"
+
 namespace hlr::lang::grammar {
 
 using namespace tao::pegtl;  // NOLINT: the grammar reads as PEG, as in PEGTL's own examples
@@ -104,21 +106,24 @@ constexpr std::string_view word_of(const key<ascii::string<Cs...>>*) {
 // grammar's analysis it is an `identifier` (it matches the same text or none).
 template <typename... Keys>
 struct any_word : identifier {
+  // Whether `word` (a whole identifier) is one of the keywords.
+  static bool contains(std::string_view word) {
+    static constexpr std::string_view kWords[] = {word_of(static_cast<const Keys*>(nullptr))...};
+    for (const std::string_view w : kWords)
+      if (w == word) return true;
+    return false;
+  }
   template <typename ParseInput>
   [[nodiscard]] static bool match(ParseInput& in) {
-    static constexpr std::string_view kWords[] = {word_of(static_cast<const Keys*>(nullptr))...};
     const char* const begin = in.current();
     const char* p = begin;
     while (p < in.end() && ((*p >= 'a' && *p <= 'z') || (*p >= 'A' && *p <= 'Z') || (*p >= '0' && *p <= '9') ||
                             *p == '_'))
       ++p;
     const std::string_view word(begin, static_cast<std::size_t>(p - begin));
-    for (const std::string_view w : kWords)
-      if (w == word) {
-        in.bump(word.size());
-        return true;
-      }
-    return false;
+    if (!contains(word)) return false;
+    in.bump(word.size());
+    return true;
   }
 };
 
@@ -276,7 +281,7 @@ struct vertex_id : sor< id_number, id_name > {};
 struct vertex_decl_id : seq< vertex_id > {};
 struct vertex_eq : seq< one< '=' >, not_at< one< '=' > > > {};
 // A position written as three plain numbers on one line, `(1.5, -2, 0)`, and followed by the next item or
-// the body's end, is read straight into the declaration (ast.hpp, VertexDecl::literal) without building
+// the body's end, is read straight into the declaration (solid_body.hpp, SolidBody::Vertex::at) without building
 // an expression: generated scripts are mostly this. Anything else — `(1, 2, 3) + v`, names, spaces after
 // a minus — is an expression.
 struct literal_blanks : star< one< ' ', '\t' > > {};
@@ -303,10 +308,46 @@ struct solid_options_close : one< ')' > {};
 struct solid_options : option_list< solid_options_open, solid_option_next, solid_options_close > {};
 
 struct solid_item : sor< vertex_decl, face_decl, line_decl > {};
+struct solid_words : any_word< key_vertex, key_face, key_hole, key_line > {};
+
+// clang-format on
+
+// A solid item in its plainest form — `vertex ID = (x, y, z)` as literal_position takes it, `face ID ID ...`
+// without holes, `line ID ID` — read by hand (plain_solid_item.hpp) straight into the block being parsed:
+// generated scripts are mostly this, and at a rule attempt per character the grammar reads them at a
+// quarter of the speed. Anything else, errors included, it leaves to solid_item, which reads the same
+// text to the same items; so to the grammar's analysis it is a solid_item. Without the parser's state
+// (the grammar tests) it matches nothing.
+struct plain_solid_item : solid_item {
+  template <apply_mode, rewind_mode, template <typename...> class, template <typename...> class,
+            typename ParseInput, typename... States>
+  [[nodiscard]] static bool match(ParseInput& in, States&... states) {
+    if constexpr (sizeof...(States) == 1) {
+      return (read_into(in, states) && ...);
+    } else {
+      return false;
+    }
+  }
+
+ private:
+  template <typename ParseInput, typename State>
+  static bool read_into(ParseInput& in, State& state) {
+    if constexpr (requires { state.solid.file(); state.base; state.plain_solid_items; }) {
+      if (!state.plain_solid_items) return false;
+      const std::size_t length = lang::read_plain_solid_item(state.base, in.current(), in.end(), state.solid);
+      in.bump(length);
+      return length > 0;
+    } else {
+      return false;
+    }
+  }
+};
+
+// clang-format off
 struct solid_name : name {};
 struct solid_open : one< '{' > {};
 struct solid_close : one< '}' > {};
-struct solid_stmt : seq< key_solid, sp, must< solid_name >, sp, opt< solid_options, sp >, must< solid_open >, sp, star< solid_item, sp >, must< solid_close > > {};
+struct solid_stmt : seq< key_solid, sp, must< solid_name >, sp, opt< solid_options, sp >, must< solid_open >, sp, star< sor< plain_solid_item, solid_item >, sp >, must< solid_close > > {};
 
 // ---- statements ---------------------------------------------------------------------------------
 

@@ -8,6 +8,7 @@
 
 #include <array>
 #include <cstddef>
+#include <cstdint>
 #include <string_view>
 #include <variant>
 #include <vector>
@@ -45,9 +46,17 @@ struct PageMarker {};
 struct LiteralPosition {
   std::array<double, 3> xyz;
 };
+// A vertex id in the solid block being read, interned there (SolidBody::intern).
+struct VertexRef {
+  std::uint32_t id;
+};
+// `hole ID ID ...` after a face's ids.
+struct HoleRefs {
+  std::vector<std::uint32_t> ids;
+};
 
-using Item = std::variant<Expr, Stmt, Token, Name, VertexId, Argument, Param, StringPart, CallSuffix,
-                          MemberSuffix, IndexSuffix, SolidItem, HoleLoop, Block, PenClause, PlotterName, PageMarker,
+using Item = std::variant<Expr, Stmt, Token, Name, VertexRef, Argument, Param, StringPart, CallSuffix,
+                          MemberSuffix, IndexSuffix, HoleRefs, Block, PenClause, PlotterName, PageMarker,
                           LiteralPosition>;
 
 // Thrown by the control (a failed must<>) and by actions; the parser turns it into a Diagnostic.
@@ -77,8 +86,13 @@ struct ParseState {
   std::vector<const char*> openers;  // unclosed brackets, innermost last
   std::size_t prefix_depth = 0;      // prefix operators and `else if` currently open
   const char* last_failed_at = nullptr;
+  // The solid block being read: its items go straight here, not onto the stack. Blocks do not nest
+  // (items hold no statements), and a block once begun is finished or the statement fails.
+  SolidBody solid;
+  bool plain_solid_items = true;  // ParseOptions::plain_solid_items
 
   std::size_t offset(const char* p) const { return static_cast<std::size_t>(p - base); }
+  std::uint32_t offset32(const char* p) const { return static_cast<std::uint32_t>(p - base); }  // SourcePos's width
   SourceSpan span(const char* begin, const char* end) const {
     return file->span(offset(begin), offset(end), line_hint);
   }

@@ -229,16 +229,22 @@ Diagnostic to_diagnostic(const detail::SyntaxError& error, const SourceFile& fil
 
 }  // namespace
 
-ParseResult parse(std::string_view source, std::string file_name, FileId file_id) {
+ParseResult parse(std::string_view source, std::string file_name, FileId file_id,
+                  const ParseOptions& options) {
+  return parse(std::make_shared<const SourceFile>(file_id, std::move(file_name), std::string(source)),
+               options);
+}
+
+ParseResult parse(std::shared_ptr<const SourceFile> file, const ParseOptions& options) {
   ParseResult result;
-  auto file = std::make_shared<SourceFile>(file_id, std::move(file_name), std::string(source));
   result.source = file;
   const std::string_view text = file->text();
 
   Script script;
-  script.file = file_id;
+  script.file = file->id();
   std::size_t pos = skip_padding(text, 0);
   detail::ParseState state;
+  state.plain_solid_items = options.plain_solid_items;
   while (pos < text.size()) {
     detail::StatementParse parsed = detail::parse_statement(*file, pos, state);
     if (parsed.statement) {

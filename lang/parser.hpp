@@ -30,8 +30,17 @@ struct ParseResult {
   bool ok() const { return script.has_value(); }
 };
 
+struct ParseOptions {
+  // Read plain solid items by hand (plain_solid_item.hpp). Off, the grammar reads every item: the tests
+  // compare the two.
+  bool plain_solid_items = true;
+};
+
 // `file_id` tells included files apart in spans; the runtime numbers the files it reads.
-ParseResult parse(std::string_view source, std::string file_name, FileId file_id = 0);
+ParseResult parse(std::string_view source, std::string file_name, FileId file_id = 0,
+                  const ParseOptions& options = {});
+// The same for a file already made (the runtime's, which moves a file's text in rather than copying it).
+ParseResult parse(std::shared_ptr<const SourceFile> file, const ParseOptions& options = {});
 
 // Checks on a parsed script that need no evaluation (syntax_checks.cpp): `return` outside a
 // function, a positional argument after a named one, an argument named twice, parameters

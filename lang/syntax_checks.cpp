@@ -29,9 +29,7 @@ class Checker {
 
   void visit(const Stmt&, const SolidStmt& s) {
     for (const auto& option : s.options) expr(*option.value);  // names and values: the runtime's
-    for (const auto& item : s.items) {
-      if (const auto* v = std::get_if<VertexDecl>(&item.node); v && v->position) expr(*v->position);
-    }
+    for (std::size_t k = 0; k < s.body.position_count(); ++k) expr(s.body.position_at(k));
   }
   void visit(const Stmt&, const LetStmt& s) { expr(*s.value); }
   void visit(const Stmt&, const DefStmt& s) {

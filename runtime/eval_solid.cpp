@@ -4,6 +4,7 @@
 // reported together; warnings (a reoriented face) are kept with the frame and printed once.
 #include <algorithm>
 #include <array>
+#include <span>
 #include <string_view>
 
 #include "core/format_number.hpp"
@@ -19,26 +20,15 @@ namespace {
 
 using lang::Overloaded;
 
-// Numbers by value ("01" is vertex 1), names as written.
-std::string vertex_key(const lang::VertexId& id) {
-  return id.is_number ? std::to_string(id.number) : id.text;
-}
-
-std::vector<std::string> vertex_keys(const std::vector<lang::VertexId>& ids) {
-  std::vector<std::string> out;
-  out.reserve(ids.size());
-  for (const lang::VertexId& id : ids) out.push_back(vertex_key(id));
-  return out;
-}
-
 constexpr std::size_t kFewIds = 16;
+constexpr std::uint32_t kUndeclared = 0xffffffffu;
 
 // A face whose id list comes back to a vertex it left (not just a vertex repeated in a row) is a loop
 // in the theses' style (Desens' LSTFAC): edges walked both ways are bridges or lines on the face.
-bool revisits_a_vertex(const std::vector<std::string>& ids) {
+bool revisits_a_vertex(std::span<const std::uint32_t> ids) {
   // The walk with repeats in a row collapsed and, when written closed (1 2 3 1), the closing id dropped.
-  std::vector<std::string_view> walk;
-  walk.reserve(ids.size());
+  thread_local std::vector<std::uint32_t> walk;
+  walk.clear();
   for (std::size_t i = 0; i < ids.size(); ++i)
     if (i == 0 || ids[i] != ids[i - 1]) walk.push_back(ids[i]);
   if (ids.size() > 1 && ids.front() == ids.back() && walk.size() > 1) walk.pop_back();
@@ -50,6 +40,24 @@ bool revisits_a_vertex(const std::vector<std::string>& ids) {
   }
   std::sort(walk.begin(), walk.end());
   return std::adjacent_find(walk.begin(), walk.end()) != walk.end();
+}
+
+// The vertex each id of the block declares, when every id is declared exactly once and every id used is
+// declared: then the builder can take numbers. Otherwise (a mistake it must report by name) empty.
+std::vector<std::uint32_t> declared_vertices(const lang::SolidBody& body) {
+  std::vector<std::uint32_t> vertex_of(body.ids().size(), kUndeclared);
+  for (std::size_t k = 0; k < body.vertices().size(); ++k) {
+    std::uint32_t& slot = vertex_of[body.vertices()[k].id];
+    if (slot != kUndeclared) return {};
+    slot = static_cast<std::uint32_t>(k);
+  }
+  for (std::size_t f = 0; f < body.face_count(); ++f)
+    for (std::size_t r = 0; r < body.ring_count(f); ++r)
+      for (const std::uint32_t id : body.ring(f, r))
+        if (vertex_of[id] == kUndeclared) return {};
+  for (const auto& [a, b] : body.lines())
+    if (vertex_of[a] == kUndeclared || vertex_of[b] == kUndeclared) return {};
+  return vertex_of;
 }
 
 // ---- options: solid NAME (crease: 30, planarity: 0.003, crossing_holes: true, fix_winding: false) ----
@@ -115,45 +123,87 @@ SolidBuildOptions build_options(const lang::SolidStmt& solid, Eval&& eval) {
 
 }  // namespace
 
+// The items go to the builder in the order written, each tagged with its place among them. When every id
+// is declared once and every id used is declared (always, in working scripts), they go as vertex numbers
+// with the ids kept only to name vertices in messages; otherwise as the ids themselves, which the
+// builder then reports on.
 void Evaluator::exec_solid(const lang::SolidStmt& solid, const ScopePtr& scope) {
+  const lang::SolidBody& body = solid.body;
   SolidBuilder builder(build_options(solid, [&](const lang::Expr& e) { return eval(e, scope); }));
-  std::vector<lang::SourceSpan> item_spans;  // builder tag → span
-  std::size_t faces = 0;
-  for (const lang::SolidItem& item : solid.items) {
-    const auto tag = static_cast<std::int64_t>(item_spans.size());
-    item_spans.push_back(item.span);
-    std::visit(
-        Overloaded{
-            [&](const lang::VertexDecl& v) {
-              if (v.literal) {
-                const auto& [x, y, z] = *v.literal;
-                builder.add_vertex(vertex_key(v.id), Point3{x, y, z}, tag);
-                return;
-              }
-              const Value p = eval(*v.position, scope);
-              if (!p.is(ValueKind::Vector))
-                fail(v.position->span,
-                     "vertex " + v.id.text + " needs a position vector, got " + kind_with_article(p.kind()),
-                     "for example: vertex " + v.id.text + " = (0, 10, 5)");
-              builder.add_vertex(vertex_key(v.id), to_point(p.as_vector()), tag);
-            },
-            [&](const lang::FaceDecl& f) {
-              ++faces;
-              const std::vector<std::string> outer = vertex_keys(f.ids);
-              if (f.holes.empty() && revisits_a_vertex(outer)) {
-                builder.add_face_loop(outer, tag);
-                return;
-              }
-              std::vector<std::vector<std::string>> holes;
-              for (const lang::HoleLoop& h : f.holes) holes.push_back(vertex_keys(h.ids));
-              builder.add_face(outer, holes, tag);
-            },
-            [&](const lang::LineDecl& l) { builder.add_line(vertex_key(l.from), vertex_key(l.to), tag); },
-        },
-        item.node);
+  const std::vector<std::uint32_t> vertex_of = declared_vertices(body);
+  const bool indexed = !vertex_of.empty() || body.ids().empty();
+  if (indexed)
+    builder.label_indexed_vertices([&](VertexIndex v) { return body.ids()[body.vertices()[v].id]; });
+  builder.reserve(body.vertices().size(), body.face_count(), 0);
+  const std::vector<std::string>& keys = body.ids();
+  std::vector<VertexIndex> ring;
+  std::size_t vertex = 0, face = 0, line = 0;
+  for (std::size_t item = 0; item < body.items().size(); ++item) {
+    const auto tag = static_cast<std::int64_t>(item);
+    switch (body.items()[item].kind) {
+      case lang::SolidBody::ItemKind::Vertex: {
+        const lang::SolidBody::Vertex& v = body.vertices()[vertex++];
+        Point3 at{v.at[0], v.at[1], v.at[2]};
+        if (v.position != lang::SolidBody::kLiteral) {
+          const lang::Expr& position = body.position(v);
+          const Value p = eval(position, scope);
+          const std::string& id = keys[v.id];
+          if (!p.is(ValueKind::Vector))
+            fail(position.span,
+                 "vertex " + id + " needs a position vector, got " + kind_with_article(p.kind()),
+                 "for example: vertex " + id + " = (0, 10, 5)");
+          at = to_point(p.as_vector());
+        }
+        if (indexed)
+          builder.add_vertex(at, tag);
+        else
+          builder.add_vertex(keys[v.id], at, tag);
+        break;
+      }
+      case lang::SolidBody::ItemKind::Face: {
+        const std::size_t rings = body.ring_count(face);
+        const bool loop = rings == 1 && revisits_a_vertex(body.ring(face, 0));
+        if (indexed && rings == 1) {
+          ring.clear();
+          for (const std::uint32_t id : body.ring(face, 0)) ring.push_back(vertex_of[id]);
+          if (loop)
+            builder.add_indexed_face_loop(ring, tag);
+          else
+            builder.add_indexed_polygon(ring, tag);
+        } else if (indexed) {
+          std::vector<std::vector<VertexIndex>> all(rings);
+          for (std::size_t r = 0; r < rings; ++r)
+            for (const std::uint32_t id : body.ring(face, r)) all[r].push_back(vertex_of[id]);
+          builder.add_indexed_face(all, tag);
+        } else {
+          auto texts = [&](std::size_t r) {
+            std::vector<std::string> out;
+            for (const std::uint32_t id : body.ring(face, r)) out.push_back(keys[id]);
+            return out;
+          };
+          if (loop) {
+            builder.add_face_loop(texts(0), tag);
+          } else {
+            std::vector<std::vector<std::string>> holes;
+            for (std::size_t r = 1; r < rings; ++r) holes.push_back(texts(r));
+            builder.add_face(texts(0), holes, tag);
+          }
+        }
+        ++face;
+        break;
+      }
+      case lang::SolidBody::ItemKind::Line: {
+        const auto& [a, b] = body.lines()[line++];
+        if (indexed)
+          builder.add_indexed_line(vertex_of[a], vertex_of[b], tag);
+        else
+          builder.add_line(keys[a], keys[b], tag);
+        break;
+      }
+    }
   }
-  budget_.charge_faces_built(solid.name.span, faces);
-  budget_.step(solid.name.span, solid.items.size());
+  budget_.charge_faces_built(solid.name.span, body.face_count());
+  budget_.step(solid.name.span, body.items().size());
 
   SolidBuildResult result = builder.build();
   // What the script's own options asked to accept (a raised planarity, crossing holes) is a note, shown
@@ -164,6 +214,7 @@ void Evaluator::exec_solid(const lang::SolidStmt& solid, const ScopePtr& scope) 
   };
   const bool accepted_warps = given("planarity"), accepted_holes = given("crossing_holes");
   std::vector<lang::Diagnostic> errors;
+  const lang::SourceFile* file = sources_.file(body.file());
   for (const SolidDiagnostic& sd : result.diagnostics) {
     lang::Diagnostic d;
     d.severity =
@@ -171,8 +222,11 @@ void Evaluator::exec_solid(const lang::SolidStmt& solid, const ScopePtr& scope) 
     if (d.severity == lang::Severity::Warning &&
         ((sd.code == "non-planar" && accepted_warps) || (sd.code == "bad-hole" && accepted_holes)))
       d.severity = lang::Severity::Note;
-    const bool tagged = sd.tag >= 0 && static_cast<std::size_t>(sd.tag) < item_spans.size();
-    d.span = tagged ? item_spans[static_cast<std::size_t>(sd.tag)] : solid.name.span;
+    d.span = solid.name.span;
+    if (sd.tag >= 0 && static_cast<std::size_t>(sd.tag) < body.items().size() && file) {
+      const lang::SolidBody::Item& item = body.items()[static_cast<std::size_t>(sd.tag)];
+      d.span = file->span(item.begin, item.end);
+    }
     d.message = "solid '" + solid.name.text + "': " + sd.message;
     (d.severity == lang::Severity::Error ? errors : out_.warnings).push_back(std::move(d));
   }

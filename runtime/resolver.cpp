@@ -129,9 +129,8 @@ class Resolver {
     std::visit(Overloaded{
                    [&](const lang::SolidStmt& s) {
                      options(s.options, scope);
-                     for (const lang::SolidItem& item : s.items)
-                       if (const auto* v = std::get_if<lang::VertexDecl>(&item.node); v && v->position)
-                         expr(*v->position, scope);
+                     for (std::size_t k = 0; k < s.body.position_count(); ++k)
+                       expr(s.body.position_at(k), scope);
                      define(scope, s.name.text);
                    },
                    [&](const lang::LetStmt& s) {

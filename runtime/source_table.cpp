@@ -5,7 +5,6 @@
 #include <cstring>
 #include <fstream>
 #include <ostream>
-#include <sstream>
 
 #include "lang/parser.hpp"
 
@@ -41,13 +40,18 @@ const SourceEntry* SourceTable::load(const fs::path& path, const std::string& di
     error = "cannot read '" + display_name + "': " + std::strerror(errno);
     return nullptr;
   }
-  std::ostringstream text;
-  text << in.rdbuf();
+  // Read straight into the string the SourceFile keeps: a script of 100 MB is not copied on the way.
+  std::string text;
+  const auto size = fs::file_size(key, ec);
+  if (!ec) text.reserve(static_cast<std::size_t>(size));
+  char buffer[1 << 16];
+  while (in.read(buffer, sizeof buffer) || in.gcount() > 0)
+    text.append(buffer, static_cast<std::size_t>(in.gcount()));
   if (in.bad()) {
     error = "cannot read '" + display_name + "': read error";
     return nullptr;
   }
-  return add(key, display_name, text.str());
+  return add(key, display_name, std::move(text));
 }
 
 const SourceEntry* SourceTable::add_text(const std::string& display_name, const std::string& text,
@@ -55,12 +59,13 @@ const SourceEntry* SourceTable::add_text(const std::string& display_name, const 
   return add(fs::absolute(path).lexically_normal(), display_name, text);
 }
 
-const SourceEntry* SourceTable::add(fs::path path, const std::string& display_name, const std::string& text) {
+const SourceEntry* SourceTable::add(fs::path path, const std::string& display_name, std::string text) {
   std::lock_guard lock(mutex_);
   const auto it = by_path_.find(path);
   if (it != by_path_.end()) return &entries_[it->second];  // another thread loaded it meanwhile
   const auto id = static_cast<lang::FileId>(entries_.size());
-  lang::ParseResult parsed = lang::parse(text, display_name, id);
+  lang::ParseResult parsed =
+      lang::parse(std::make_shared<const lang::SourceFile>(id, display_name, std::move(text)));
   SourceEntry& e = entries_.emplace_back();
   e.id = id;
   e.path = path;

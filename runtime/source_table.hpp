@@ -53,8 +53,7 @@ class SourceTable {
   void release_syntax();
 
  private:
-  const SourceEntry* add(std::filesystem::path path, const std::string& display_name,
-                         const std::string& text);
+  const SourceEntry* add(std::filesystem::path path, const std::string& display_name, std::string text);
 
   FileAccess access_;
   mutable std::mutex mutex_;

@@ -115,6 +115,12 @@ void SolidBuilder::add_indexed_polygon(std::span<const VertexIndex> ring, std::i
   end_face(tag, false);
 }
 
+void SolidBuilder::add_indexed_face_loop(std::span<const VertexIndex> loop, std::int64_t tag) {
+  for (VertexIndex v : loop) refs_.push_back(index_ref(v));
+  end_ring();
+  end_face(tag, true);
+}
+
 void SolidBuilder::add_indexed_polygons(std::span<const VertexIndex> vertices,
                                         std::span<const std::size_t> ends, std::int64_t first_tag) {
   for (std::size_t k = 0; k < ends.size(); ++k)

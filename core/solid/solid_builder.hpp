@@ -84,6 +84,8 @@ class SolidBuilder {
   // tag first_tag + k, or -1 when first_tag is -1. The same as adding them one by one.
   void add_indexed_polygons(std::span<const VertexIndex> vertices, std::span<const std::size_t> ends,
                             std::int64_t first_tag = -1);
+  // A face given as one closed loop, as add_face_loop.
+  void add_indexed_face_loop(std::span<const VertexIndex> loop, std::int64_t tag = -1);
   void add_indexed_line(VertexIndex a, VertexIndex b, std::int64_t tag = -1);
   // How messages name indexed vertices (a mesh file's own vertex numbers, say); by default their number.
   // Only the wording changes: ids given as text still match an indexed vertex by its number.

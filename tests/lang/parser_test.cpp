@@ -90,8 +90,10 @@ TEST(Parser, LiteralVertexPositionsAreTheExpressionsTheyLookLike) {
   };
   const auto vertex = [](const std::string& position) {
     const Script script = parse_ok("solid s {\n  vertex a = " + position + "\n  face a a a\n}\n");
-    const auto& v = std::get<VertexDecl>(std::get<SolidStmt>(script.statements.at(0).node).items.at(0).node);
-    return Read{v.literal.has_value(), v.position != nullptr, v.literal.value_or(std::array<double, 3>{})};
+    const SolidBody& body = std::get<SolidStmt>(script.statements.at(0).node).body;
+    const SolidBody::Vertex& v = body.vertices().at(0);
+    const bool literal = v.position == SolidBody::kLiteral;
+    return Read{literal, body.position_count() > 0, literal ? v.at : std::array<double, 3>{}};
   };
   const auto dump_of = [](const std::string& position) {
     return dump(parse_ok("solid s {\n  vertex a = " + position + "\n  face a a a\n}\n").statements.at(0));
@@ -114,10 +116,9 @@ TEST(Parser, LiteralVertexPositionsAreTheExpressionsTheyLookLike) {
     const std::string text = "let x = 1\nsolid s {\n  vertex a = " + std::string(expression) + "\n}\n";
     const ParseResult r = parse(text, "t.hls", 0);
     if (!r.script) continue;  // an error (then 4) is the expression grammar's
-    const auto& v =
-        std::get<VertexDecl>(std::get<SolidStmt>(r.script->statements.at(1).node).items.at(0).node);
-    EXPECT_FALSE(v.literal) << expression;
-    EXPECT_NE(v.position, nullptr) << expression;
+    const SolidBody& body = std::get<SolidStmt>(r.script->statements.at(1).node).body;
+    EXPECT_NE(body.vertices().at(0).position, SolidBody::kLiteral) << expression;
+    EXPECT_EQ(body.position_count(), 1U) << expression;
   }
   // A malformed number is the same error either way.
   const ParseResult bad = parse("solid s {\n  vertex a = (1.2.3, 0, 0)\n}\n", "t.hls", 0);
@@ -136,29 +137,36 @@ TEST(Parser, SolidNodes) {
   const auto& solid = std::get<SolidStmt>(script.statements.at(0).node);
   EXPECT_EQ(solid.name.text, "lblock");
   EXPECT_EQ(span_text(text, solid.name.span), "lblock");
-  ASSERT_EQ(solid.items.size(), 5U);
-  const auto& v1 = std::get<VertexDecl>(solid.items[0].node);
-  EXPECT_TRUE(v1.id.is_number);
-  EXPECT_EQ(v1.id.number, 1);
-  EXPECT_EQ(span_text(text, solid.items[0].span), "vertex 1 = (0, 10, 0)");
+  const SolidBody& body = solid.body;
+  ASSERT_EQ(body.items().size(), 5U);
+  const auto item_text = [&](std::size_t k) {
+    return text.substr(body.items()[k].begin, body.items()[k].end - body.items()[k].begin);
+  };
+  EXPECT_EQ(item_text(0), "vertex 1 = (0, 10, 0)");
+  EXPECT_EQ(item_text(3), "face 5 6 7 8 hole 9 10 11");
+  EXPECT_EQ(item_text(4), "line 12 13");
+  ASSERT_EQ(body.vertices().size(), 2U);
+  const auto id = [&](std::uint32_t k) { return body.ids().at(k); };
+  EXPECT_EQ(id(body.vertices()[0].id), "1");
   // Three plain numbers are read straight into the declaration.
-  ASSERT_TRUE(v1.literal);
-  EXPECT_EQ(*v1.literal, (std::array<double, 3>{0, 10, 0}));
-  EXPECT_EQ(v1.position, nullptr);
-  const auto& vtop = std::get<VertexDecl>(solid.items[1].node);
-  EXPECT_FALSE(vtop.id.is_number);
-  EXPECT_EQ(vtop.id.text, "top");
-  const auto& face = std::get<FaceDecl>(solid.items[2].node);
-  ASSERT_EQ(face.ids.size(), 4U);
-  EXPECT_EQ(face.ids[1].text, "top");
-  EXPECT_EQ(face.ids[1].span.begin.column, 10U);
-  const auto& holed = std::get<FaceDecl>(solid.items[3].node);
-  ASSERT_EQ(holed.holes.size(), 1U);
-  EXPECT_EQ(holed.holes[0].ids.size(), 3U);
-  EXPECT_EQ(span_text(text, holed.holes[0].span), "hole 9 10 11");
-  const auto& line = std::get<LineDecl>(solid.items[4].node);
-  EXPECT_EQ(line.from.number, 12);
-  EXPECT_EQ(line.to.number, 13);
+  EXPECT_EQ(body.vertices()[0].position, SolidBody::kLiteral);
+  EXPECT_EQ(body.vertices()[0].at, (std::array<double, 3>{0, 10, 0}));
+  EXPECT_EQ(id(body.vertices()[1].id), "top");
+  ASSERT_EQ(body.face_count(), 2U);
+  ASSERT_EQ(body.ring_count(0), 1U);
+  ASSERT_EQ(body.ring(0, 0).size(), 4U);
+  EXPECT_EQ(id(body.ring(0, 0)[1]), "top");
+  EXPECT_EQ(body.ring(0, 0)[0], body.vertices()[0].id);  // one id, interned once
+  ASSERT_EQ(body.ring_count(1), 2U);
+  EXPECT_EQ(body.ring(1, 1).size(), 3U);
+  EXPECT_EQ(id(body.ring(1, 1)[2]), "11");
+  ASSERT_EQ(body.lines().size(), 1U);
+  EXPECT_EQ(id(body.lines()[0][0]), "12");
+  EXPECT_EQ(id(body.lines()[0][1]), "13");
+  // A number is its value: "007" and "7" are one vertex.
+  const Script zeros = parse_ok("solid s {\n  vertex 007 = (0, 0, 0)\n  line 7 0007\n}\n");
+  const SolidBody& zb = std::get<SolidStmt>(zeros.statements.at(0).node).body;
+  EXPECT_EQ(zb.ids(), std::vector<std::string>{"7"});
 }
 
 TEST(Parser, SolidOptions) {
@@ -171,7 +179,7 @@ TEST(Parser, SolidOptions) {
   const auto& solid = std::get<SolidStmt>(script.statements.at(0).node);
   EXPECT_EQ(solid.name.text, "carrier");
   ASSERT_EQ(solid.options.size(), 2U);
-  ASSERT_EQ(solid.items.size(), 2U);
+  ASSERT_EQ(solid.body.items().size(), 2U);
   EXPECT_EQ(solid.options[0].label->text, "planarity");
   EXPECT_EQ(span_text(text, solid.options[0].span), "planarity: 0.003");
   EXPECT_EQ(span_text(text, solid.options[0].label->span), "planarity");
