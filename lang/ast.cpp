@@ -72,7 +72,7 @@ std::string quoted(const std::string& text) {
 
 std::string ids_text(const SolidBody& body, std::span<const std::uint32_t> ids) {
   std::string out;
-  for (const std::uint32_t id : ids) out += " " + body.ids()[id];
+  for (const std::uint32_t id : ids) out += " " + std::string(body.id(id));
   return out;
 }
 
@@ -108,7 +108,7 @@ std::string body_text(const SolidBody& body) {
     switch (item.kind) {
       case SolidBody::ItemKind::Vertex: {
         const SolidBody::Vertex& v = body.vertices()[vertex++];
-        out += " (vertex " + body.ids()[v.id] + " ";
+        out += " (vertex " + std::string(body.id(v.id)) + " ";
         if (v.position != SolidBody::kLiteral) {
           out += dump(body.position(v)) + ")";
           break;
@@ -130,7 +130,7 @@ std::string body_text(const SolidBody& body) {
       }
       case SolidBody::ItemKind::Line: {
         const auto& [from, to] = body.lines()[line++];
-        out += " (line " + body.ids()[from] + " " + body.ids()[to] + ")";
+        out += " (line " + std::string(body.id(from)) + " " + std::string(body.id(to)) + ")";
         break;
       }
     }

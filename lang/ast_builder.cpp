@@ -337,7 +337,7 @@ template <>
 struct action<g::solid_open> {
   template <typename Input>
   static void apply(const Input& /*in*/, ParseState& s) {
-    s.solid = SolidBody(s.file->id());
+    s.solid.restart(s.file->id());
   }
 };
 
@@ -346,11 +346,10 @@ struct action<g::solid_stmt> {
   template <typename Input>
   static void apply(const Input& in, ParseState& s) {
     make_statement(span_of(in, s), s, [&](auto it, auto end) {
-      SolidStmt solid{take<Name>(*it), {}, std::move(s.solid)};
+      SolidStmt solid{take<Name>(*it), {}, s.solid.take_compact()};
       for (++it; it != end && holds<Argument>(*it); ++it) solid.options.push_back(take<Argument>(*it));
       return solid;
     });
-    s.solid = SolidBody();
   }
 };
 

@@ -1,6 +1,7 @@
 #include "lang/solid_body.hpp"
 
 #include <algorithm>
+#include <iterator>
 
 #include "lang/ast.hpp"
 
@@ -17,19 +18,26 @@ SolidBody::SolidBody(SolidBody&&) noexcept = default;
 SolidBody& SolidBody::operator=(SolidBody&&) noexcept = default;
 SolidBody::~SolidBody() = default;
 
+std::string_view SolidBody::id(std::uint32_t k) const {
+  const std::uint32_t from = k == 0 ? 0 : id_ends_[k - 1];
+  return std::string_view(id_chars_).substr(from, id_ends_[k] - from);
+}
+
 std::uint32_t SolidBody::intern(std::string_view key) {
-  if (ids_.size() <= kFewIds) {
-    for (std::size_t i = 0; i < ids_.size(); ++i)
-      if (ids_[i] == key) return static_cast<std::uint32_t>(i);
+  const std::size_t count = id_ends_.size();
+  if (count <= kFewIds) {
+    for (std::uint32_t k = 0; k < count; ++k)
+      if (id(k) == key) return k;
   } else {
     if (id_index_.empty())
-      for (std::size_t i = 0; i < ids_.size(); ++i) id_index_.emplace(ids_[i], static_cast<std::uint32_t>(i));
+      for (std::uint32_t k = 0; k < count; ++k) id_index_.emplace(std::string(id(k)), k);
     const auto it = id_index_.find(std::string(key));
     if (it != id_index_.end()) return it->second;
   }
-  const auto index = static_cast<std::uint32_t>(ids_.size());
-  ids_.emplace_back(key);
-  if (!id_index_.empty()) id_index_.emplace(ids_.back(), index);
+  const auto index = static_cast<std::uint32_t>(count);
+  id_chars_.append(key);
+  id_ends_.push_back(static_cast<std::uint32_t>(id_chars_.size()));
+  if (!id_index_.empty()) id_index_.emplace(std::string(key), index);
   return index;
 }
 
@@ -58,6 +66,47 @@ void SolidBody::add_face(std::span<const std::uint32_t> refs, std::span<const st
 void SolidBody::add_line(std::uint32_t from, std::uint32_t to, std::uint32_t begin, std::uint32_t end) {
   items_.push_back({ItemKind::Line, begin, end});
   lines_.push_back({from, to});
+}
+
+namespace {
+template <typename T>
+std::vector<T> exact_copy(std::vector<T>& from) {
+  std::vector<T> out;
+  out.reserve(from.size());
+  std::move(from.begin(), from.end(), std::back_inserter(out));
+  from.clear();
+  return out;
+}
+}  // namespace
+
+SolidBody SolidBody::take_compact() {
+  SolidBody out(file_);
+  out.items_ = exact_copy(items_);
+  out.id_chars_ = std::string(id_chars_);
+  id_chars_.clear();
+  out.id_ends_ = exact_copy(id_ends_);
+  id_index_.clear();
+  out.vertices_ = exact_copy(vertices_);
+  out.positions_ = exact_copy(positions_);
+  out.refs_ = exact_copy(refs_);
+  out.ring_ends_ = exact_copy(ring_ends_);
+  out.face_ends_ = exact_copy(face_ends_);
+  out.lines_ = exact_copy(lines_);
+  return out;
+}
+
+void SolidBody::restart(FileId file) {
+  file_ = file;
+  items_.clear();
+  id_chars_.clear();
+  id_ends_.clear();
+  id_index_.clear();
+  vertices_.clear();
+  positions_.clear();
+  refs_.clear();
+  ring_ends_.clear();
+  face_ends_.clear();
+  lines_.clear();
 }
 
 std::span<const std::uint32_t> SolidBody::ring(std::size_t face, std::size_t r) const {

@@ -30,7 +30,7 @@ class SolidBody {
   };
   static constexpr std::uint32_t kLiteral = 0xffffffffu;
   struct Vertex {
-    std::uint32_t id = 0;               // into ids()
+    std::uint32_t id = 0;               // id(id) is its text
     std::uint32_t position = kLiteral;  // into positions(), or kLiteral: the point is `at`
     std::array<double, 3> at{};
   };
@@ -52,10 +52,16 @@ class SolidBody {
   void add_face(std::span<const std::uint32_t> refs, std::span<const std::uint32_t> ring_ends,
                 std::uint32_t begin, std::uint32_t end);
   void add_line(std::uint32_t from, std::uint32_t to, std::uint32_t begin, std::uint32_t end);
+  // The body, moved out with every array allocated to its size; this one is left empty for the next block
+  // with its room kept. The parser reads every block into one body and keeps the copies.
+  SolidBody take_compact();
+  // Empties the body for a block of `file`, keeping its room.
+  void restart(FileId file);
 
   // In the order written; the k-th Vertex item is vertices()[k], the k-th Face item face k, and so on.
   const std::vector<Item>& items() const { return items_; }
-  const std::vector<std::string>& ids() const { return ids_; }
+  std::size_t id_count() const { return id_ends_.size(); }
+  std::string_view id(std::uint32_t k) const;
   const std::vector<Vertex>& vertices() const { return vertices_; }
   const Expr& position(const Vertex& v) const { return *positions_[v.position]; }
   std::size_t position_count() const { return positions_.size(); }
@@ -72,8 +78,9 @@ class SolidBody {
 
   FileId file_ = 0;
   std::vector<Item> items_;
-  std::vector<std::string> ids_;
-  std::unordered_map<std::string, std::uint32_t> id_index_;  // built only when a block has many ids
+  std::string id_chars_;                                     // the ids back to back
+  std::vector<std::uint32_t> id_ends_;                       // end of each id in id_chars_
+  std::unordered_map<std::string, std::uint32_t> id_index_;  // while parsing a block with many ids
   std::vector<Vertex> vertices_;
   std::vector<std::unique_ptr<Expr>> positions_;
   std::vector<std::uint32_t> refs_;       // every ring of every face, back to back

@@ -45,7 +45,7 @@ bool revisits_a_vertex(std::span<const std::uint32_t> ids) {
 // The vertex each id of the block declares, when every id is declared exactly once and every id used is
 // declared: then the builder can take numbers. Otherwise (a mistake it must report by name) empty.
 std::vector<std::uint32_t> declared_vertices(const lang::SolidBody& body) {
-  std::vector<std::uint32_t> vertex_of(body.ids().size(), kUndeclared);
+  std::vector<std::uint32_t> vertex_of(body.id_count(), kUndeclared);
   for (std::size_t k = 0; k < body.vertices().size(); ++k) {
     std::uint32_t& slot = vertex_of[body.vertices()[k].id];
     if (slot != kUndeclared) return {};
@@ -131,11 +131,12 @@ void Evaluator::exec_solid(const lang::SolidStmt& solid, const ScopePtr& scope) 
   const lang::SolidBody& body = solid.body;
   SolidBuilder builder(build_options(solid, [&](const lang::Expr& e) { return eval(e, scope); }));
   const std::vector<std::uint32_t> vertex_of = declared_vertices(body);
-  const bool indexed = !vertex_of.empty() || body.ids().empty();
+  const bool indexed = !vertex_of.empty() || body.id_count() == 0;
   if (indexed)
-    builder.label_indexed_vertices([&](VertexIndex v) { return body.ids()[body.vertices()[v].id]; });
+    builder.label_indexed_vertices(
+        [&](VertexIndex v) { return std::string(body.id(body.vertices()[v].id)); });
   builder.reserve(body.vertices().size(), body.face_count(), 0);
-  const std::vector<std::string>& keys = body.ids();
+  const auto key = [&](std::uint32_t id) { return std::string(body.id(id)); };
   std::vector<VertexIndex> ring;
   std::size_t vertex = 0, face = 0, line = 0;
   for (std::size_t item = 0; item < body.items().size(); ++item) {
@@ -147,7 +148,7 @@ void Evaluator::exec_solid(const lang::SolidStmt& solid, const ScopePtr& scope) 
         if (v.position != lang::SolidBody::kLiteral) {
           const lang::Expr& position = body.position(v);
           const Value p = eval(position, scope);
-          const std::string& id = keys[v.id];
+          const std::string id = key(v.id);
           if (!p.is(ValueKind::Vector))
             fail(position.span,
                  "vertex " + id + " needs a position vector, got " + kind_with_article(p.kind()),
@@ -157,7 +158,7 @@ void Evaluator::exec_solid(const lang::SolidStmt& solid, const ScopePtr& scope) 
         if (indexed)
           builder.add_vertex(at, tag);
         else
-          builder.add_vertex(keys[v.id], at, tag);
+          builder.add_vertex(key(v.id), at, tag);
         break;
       }
       case lang::SolidBody::ItemKind::Face: {
@@ -178,7 +179,7 @@ void Evaluator::exec_solid(const lang::SolidStmt& solid, const ScopePtr& scope) 
         } else {
           auto texts = [&](std::size_t r) {
             std::vector<std::string> out;
-            for (const std::uint32_t id : body.ring(face, r)) out.push_back(keys[id]);
+            for (const std::uint32_t id : body.ring(face, r)) out.push_back(key(id));
             return out;
           };
           if (loop) {
@@ -197,7 +198,7 @@ void Evaluator::exec_solid(const lang::SolidStmt& solid, const ScopePtr& scope) 
         if (indexed)
           builder.add_indexed_line(vertex_of[a], vertex_of[b], tag);
         else
-          builder.add_line(keys[a], keys[b], tag);
+          builder.add_line(key(a), key(b), tag);
         break;
       }
     }

@@ -200,31 +200,26 @@ std::string svg_bytes(const PlotPage& page, const CairoOptions& o) {
   return renumber_surface_ids(bytes);
 }
 
-// Whether every pen on the page draws in a grey (black included): then the PNG is rasterised into one
-// byte of ink a pixel and stored as grey, a quarter of the pixels' memory and of what deflate reads.
-bool all_pens_grey(const PlotPage& page, const PenTable& pens) {
-  int last = 0;  // strokes come in runs of one pen
+// Whether every pen on the page has a colour `fits` (strokes come in runs of one pen: each run is asked
+// once). Grey pens (black included) on white paper, or black ones on a transparent page, let the PNG be
+// rasterised into one byte of ink a pixel and stored as grey: a quarter of the pixels' memory and of what
+// deflate reads.
+template <typename Fits>
+bool every_pen(const PlotPage& page, const PenTable& pens, Fits&& fits) {
+  int last = 0;  // pen numbers start at 1
   for (const PlotStroke& s : page.strokes) {
     if (s.pen == last) continue;
     last = s.pen;
-    const PenStyle style = pens.style(s.pen);
-    if (style.r != style.g || style.g != style.b) return false;
-  }
-  return true;
-}
-
-// Whether every pen on the page is black.
-bool all_pens_black(const PlotPage& page, const PenTable& pens) {
-  for (const PlotStroke& s : page.strokes) {
-    const PenStyle style = pens.style(s.pen);
-    if (style.r != 0 || style.g != 0 || style.b != 0) return false;
+    if (!fits(pens.style(s.pen))) return false;
   }
   return true;
 }
 
 std::string png_bytes(const PlotPage& page, const CairoOptions& o) {
   const PixelSize size = png_pixel_size(page, o.dpi);
-  const bool grey = o.white_background ? all_pens_grey(page, o.pens) : all_pens_black(page, o.pens);
+  const bool grey = every_pen(page, o.pens, [&](const PenStyle& p) {
+    return o.white_background ? p.r == p.g && p.g == p.b : p.r == 0 && p.g == 0 && p.b == 0;
+  });
   // Grey pages are drawn as ink on an alpha-only surface: a pen of grey g lays ink 1 − g, replacing
   // (SOURCE) what lies under its coverage exactly as an opaque colour would over white paper.
   const cairo_format_t format = grey                 ? CAIRO_FORMAT_A8

@@ -146,7 +146,7 @@ TEST(Parser, SolidNodes) {
   EXPECT_EQ(item_text(3), "face 5 6 7 8 hole 9 10 11");
   EXPECT_EQ(item_text(4), "line 12 13");
   ASSERT_EQ(body.vertices().size(), 2U);
-  const auto id = [&](std::uint32_t k) { return body.ids().at(k); };
+  const auto id = [&](std::uint32_t k) { return std::string(body.id(k)); };
   EXPECT_EQ(id(body.vertices()[0].id), "1");
   // Three plain numbers are read straight into the declaration.
   EXPECT_EQ(body.vertices()[0].position, SolidBody::kLiteral);
@@ -166,7 +166,8 @@ TEST(Parser, SolidNodes) {
   // A number is its value: "007" and "7" are one vertex.
   const Script zeros = parse_ok("solid s {\n  vertex 007 = (0, 0, 0)\n  line 7 0007\n}\n");
   const SolidBody& zb = std::get<SolidStmt>(zeros.statements.at(0).node).body;
-  EXPECT_EQ(zb.ids(), std::vector<std::string>{"7"});
+  ASSERT_EQ(zb.id_count(), 1U);
+  EXPECT_EQ(zb.id(0), "7");
 }
 
 TEST(Parser, SolidOptions) {

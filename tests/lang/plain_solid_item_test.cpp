@@ -27,7 +27,7 @@ std::string reading(const std::string& text, bool plain) {
     for (const SolidBody::Item& item : solid->body.items())
       out += std::to_string(static_cast<int>(item.kind)) + "@" + std::to_string(item.begin) + "-" +
              std::to_string(item.end) + " ";
-    for (const std::string& id : solid->body.ids()) out += id + ",";
+    for (std::uint32_t k = 0; k < solid->body.id_count(); ++k) out += std::string(solid->body.id(k)) + ",";
     out += "\n";
   }
   return out;
