@@ -44,6 +44,7 @@
 
 #include <tao/pegtl.hpp>
 
+#include <algorithm>
 #include <string_view>
 
 #include "lang/plain_solid_item.hpp"
@@ -109,6 +110,9 @@ struct any_word : identifier {
   // Whether `word` (a whole identifier) is one of the keywords.
   static bool contains(std::string_view word) {
     static constexpr std::string_view kWords[] = {word_of(static_cast<const Keys*>(nullptr))...};
+    static constexpr std::size_t kShortest = std::min({word_of(static_cast<const Keys*>(nullptr)).size()...});
+    static constexpr std::size_t kLongest = std::max({word_of(static_cast<const Keys*>(nullptr)).size()...});
+    if (word.size() < kShortest || word.size() > kLongest) return false;  // most names: no comparing
     for (const std::string_view w : kWords)
       if (w == word) return true;
     return false;

@@ -48,7 +48,7 @@ std::string_view word_at(const char* p, const char* end) {
   return {p, static_cast<std::size_t>(q - p)};
 }
 
-bool is_solid_word(std::string_view w) { return g::solid_words::contains(w); }
+bool is_keyword(std::string_view w) { return g::reserved::contains(w) || g::solid_words::contains(w); }
 
 enum class Read { Yes, No, Decline };
 
@@ -73,7 +73,7 @@ Read read_id(const char*& p, const char* end, std::string_view& key, std::array<
     return Read::Yes;
   }
   const std::string_view w = word_at(p, end);
-  if (w.empty() || g::reserved::contains(w) || is_solid_word(w)) return Read::No;
+  if (w.empty() || is_keyword(w)) return Read::No;
   key = w;
   p += w.size();
   return Read::Yes;
