@@ -72,6 +72,7 @@ class SolidBody {
   // Ring r (0: the outer ring, then the holes) of a face, as ids.
   std::span<const std::uint32_t> ring(std::size_t face, std::size_t r) const;
   const std::vector<std::array<std::uint32_t, 2>>& lines() const { return lines_; }
+  std::size_t reference_count() const { return refs_.size(); }  // ids named by all faces' rings
 
  private:
   std::uint32_t first_ring(std::size_t face) const { return face == 0 ? 0 : face_ends_[face - 1]; }

@@ -135,7 +135,7 @@ void Evaluator::exec_solid(const lang::SolidStmt& solid, const ScopePtr& scope) 
   if (indexed)
     builder.label_indexed_vertices(
         [&](VertexIndex v) { return std::string(body.id(body.vertices()[v].id)); });
-  builder.reserve(body.vertices().size(), body.face_count(), 0);
+  builder.reserve(body.vertices().size(), body.face_count(), body.reference_count(), true);
   const auto key = [&](std::uint32_t id) { return std::string(body.id(id)); };
   std::vector<VertexIndex> ring;
   std::size_t vertex = 0, face = 0, line = 0;

@@ -152,10 +152,14 @@ void SolidBuilder::add_indexed_line(VertexIndex a, VertexIndex b, std::int64_t t
   lines_.push_back({ra, index_ref(b), tag});
 }
 
-void SolidBuilder::reserve(std::size_t vertices, std::size_t faces, std::size_t references) {
+void SolidBuilder::reserve(std::size_t vertices, std::size_t faces, std::size_t references, bool tagged) {
   positions_.reserve(positions_.size() + vertices);
   if (!vertex_ids_.empty()) vertex_ids_.reserve(vertex_ids_.size() + vertices);
   refs_.reserve(refs_.size() + references);
+  if (tagged) {  // the tags stay empty while none is given: room only when they will be
+    vertex_tags_.reserve(positions_.size() + vertices);
+    face_tags_.reserve(face_ends_.size() + faces);
+  }
   ring_ends_.reserve(ring_ends_.size() + faces);
   face_ends_.reserve(face_ends_.size() + faces);
   face_is_loop_.reserve(face_is_loop_.size() + faces);

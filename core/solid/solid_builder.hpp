@@ -90,8 +90,9 @@ class SolidBuilder {
   // How messages name indexed vertices (a mesh file's own vertex numbers, say); by default their number.
   // Only the wording changes: ids given as text still match an indexed vertex by its number.
   void label_indexed_vertices(std::function<std::string(VertexIndex)> label) { label_ = std::move(label); }
-  // Optional: room for this many more vertices, faces and vertex references in all rings.
-  void reserve(std::size_t vertices, std::size_t faces, std::size_t references);
+  // Optional: room for this many more vertices, faces and vertex references in all rings, and for their
+  // tags when `tagged`.
+  void reserve(std::size_t vertices, std::size_t faces, std::size_t references, bool tagged = false);
 
   SolidBuildResult build() const;
 
