@@ -1,9 +1,19 @@
 #include "runtime/allocator_policy.hpp"
 
 #include <cstdlib>  // defines __GLIBC__ under glibc
+#include <string>
 
 #if defined(__GLIBC__)
 #include <malloc.h>
+#include <unistd.h>
+#endif
+
+#if defined(__SANITIZE_ADDRESS__)
+#define HLR_OWN_ALLOCATOR 1
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define HLR_OWN_ALLOCATOR 1
+#endif
 #endif
 
 namespace hlr::runtime {
@@ -14,6 +24,25 @@ void keep_freed_memory() {
   constexpr int kNeverTrim = -1;                   // as an unsigned size: no trimming at all
   mallopt(M_MMAP_THRESHOLD, kLargestMmapThreshold);
   mallopt(M_TRIM_THRESHOLD, kNeverTrim);
+#endif
+}
+
+void heap_on_huge_pages(char** argv) {
+#if defined(__GLIBC__) && !defined(HLR_OWN_ALLOCATOR)
+  constexpr const char* kVariable = "GLIBC_TUNABLES";
+  const char* before = std::getenv("GLIBC_TUNABLES");
+  const std::string kept = before ? before : "";
+  if (kept.find("glibc.malloc.hugetlb") != std::string::npos) return;
+  const std::string asked = kept + (kept.empty() ? "" : ":") + "glibc.malloc.hugetlb=1";
+  if (::setenv(kVariable, asked.c_str(), 1) != 0) return;
+  ::execv("/proc/self/exe", argv);
+  // Still here: no /proc. Go on as started, and leave the environment as it was for what we run.
+  if (before)
+    ::setenv(kVariable, kept.c_str(), 1);
+  else
+    ::unsetenv(kVariable);
+#else
+  (void)argv;
 #endif
 }
 

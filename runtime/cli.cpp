@@ -35,6 +35,9 @@ constexpr const char* kVersion = "hlrscript 0.1.0";
 
 using Clock = std::chrono::steady_clock;
 
+bool leave_at_exit = false;
+const Program* left_at_exit = nullptr;  // reachable to the end, not a leak
+
 int report(std::ostream& err, const EvalError& e, const Program* program) {
   if (e.diagnostics.empty() || !program) {
     err << "hlrscript: error: " << e.what() << "\n";
@@ -237,7 +240,8 @@ int run_program(const Program& program, const CliOptions& o, std::ostream& out, 
     }
     const std::string cameras = join_cameras(first);
     const std::size_t objects = first.scene.objects.size();
-    if (releasable && frames.size() == 1 && frames[0] == 0) releasable->release_syntax();
+    // Only a render gains from the release (the engine's memory); `check` would spend time on it.
+    if (releasable && options.render && frames.size() == 1 && frames[0] == 0) releasable->release_syntax();
 
     const PipelineResult result = run_pipeline(program, frames, fps, options, std::move(first));
     progress.clear();
@@ -344,8 +348,11 @@ int run_script(const CliOptions& o, std::ostream& out, std::ostream& err,
   else
     code = run_program(*program, o, out, err, start, program.get());
   if (inputs) *inputs = program->sources().paths();
+  if (leave_at_exit && !inputs && !left_at_exit) left_at_exit = program.release();
   return code;
 }
+
+void leave_program_at_exit() { leave_at_exit = true; }
 
 int run_loaded_program(const Program& program, const CliOptions& options, std::ostream& out,
                        std::ostream& err) {

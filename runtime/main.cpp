@@ -7,7 +7,9 @@
 #include "runtime/cli.hpp"
 
 int main(int argc, char** argv) {
+  hlr::runtime::heap_on_huge_pages(argv);
   hlr::runtime::keep_freed_memory();
+  hlr::runtime::leave_program_at_exit();
   return hlr::runtime::run_cli(argc, argv, std::cin, ::isatty(STDIN_FILENO) == 1, std::cout, std::cerr,
                                ::isatty(STDERR_FILENO) == 1);
 }
