@@ -15,7 +15,7 @@ namespace hlr::lang::detail::build {
 
 // ---- helpers on the node stack ------------------------------------------------------------------
 
-inline std::size_t first_child(const ParseState& s) { return s.marks.back().items; }
+inline std::size_t first_child(const ParseState& s) { return s.marks.back(); }
 inline std::size_t child_count(const ParseState& s) { return s.items.size() - first_child(s); }
 
 template <typename T>

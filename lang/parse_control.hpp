@@ -29,9 +29,9 @@ struct control : tao::pegtl::normal<Rule> {
     if constexpr (grammar::nests<Rule>) {
       if (++s.prefix_depth + s.openers.size() > kMaxNesting) throw SyntaxError{at, kTooDeep};
     }
-    if constexpr (has_action) s.marks.push_back({height, at});
+    if constexpr (has_action) s.marks.push(height);
     const bool matched = tao::pegtl::normal<Rule>::template match<A, M, Action, Control>(in, s);
-    if constexpr (has_action) s.marks.pop_back();
+    if constexpr (has_action) s.marks.pop();
     if constexpr (grammar::nests<Rule>) --s.prefix_depth;
     if (!matched) {
       if (s.items.size() > height)

@@ -55,9 +55,9 @@ struct HoleRefs {
   std::vector<std::uint32_t> ids;
 };
 
-using Item = std::variant<Expr, Stmt, Token, Name, VertexRef, Argument, Param, StringPart, CallSuffix,
-                          MemberSuffix, IndexSuffix, HoleRefs, Block, PenClause, PlotterName, PageMarker,
-                          LiteralPosition>;
+using Item =
+    std::variant<Expr, Stmt, Token, Name, VertexRef, Argument, Param, StringPart, CallSuffix, MemberSuffix,
+                 IndexSuffix, HoleRefs, Block, PenClause, PlotterName, PageMarker, LiteralPosition>;
 
 // Thrown by the control (a failed must<>) and by actions; the parser turns it into a Diagnostic.
 struct SyntaxError {
@@ -77,12 +77,25 @@ struct ParseState {
   const SourceFile* file = nullptr;
   const char* base = nullptr;  // file->text().data(); offsets are pointer differences from it
 
-  struct Mark {
-    std::size_t items;
-    const char* at;
+  // Heights of `items` where the rules with actions now open began, innermost last. Pushed for
+  // millions of rule attempts, so kept inline: std::vector's out-of-line push_back, reading back a
+  // two-word argument just stored, was 6 % of parsing general code.
+  class MarkStack {
+   public:
+    void push(std::size_t height) {
+      if (size_ == heights_.size()) heights_.resize(heights_.size() * 2 + 64);
+      heights_[size_++] = height;
+    }
+    void pop() { --size_; }
+    std::size_t back() const { return heights_[size_ - 1]; }
+    void clear() { size_ = 0; }
+
+   private:
+    std::vector<std::size_t> heights_;
+    std::size_t size_ = 0;
   };
   std::vector<Item> items;
-  std::vector<Mark> marks;
+  MarkStack marks;
   std::vector<const char*> openers;  // unclosed brackets, innermost last
   std::size_t prefix_depth = 0;      // prefix operators and `else if` currently open
   const char* last_failed_at = nullptr;
@@ -92,7 +105,9 @@ struct ParseState {
   bool plain_solid_items = true;  // ParseOptions::plain_solid_items
 
   std::size_t offset(const char* p) const { return static_cast<std::size_t>(p - base); }
-  std::uint32_t offset32(const char* p) const { return static_cast<std::uint32_t>(p - base); }  // SourcePos's width
+  std::uint32_t offset32(const char* p) const {
+    return static_cast<std::uint32_t>(p - base);
+  }  // SourcePos's width
   SourceSpan span(const char* begin, const char* end) const {
     return file->span(offset(begin), offset(end), line_hint);
   }

@@ -12,60 +12,73 @@ namespace {
 constexpr std::size_t kFewIds = 16;
 }  // namespace
 
-SolidBody::SolidBody() = default;
-SolidBody::SolidBody(FileId file) : file_(file) {}
+const SolidBody::Parts SolidBody::kNoParts{};
+
+SolidBody::SolidBody() : parts_(std::make_unique<Parts>()) {}
+SolidBody::SolidBody(FileId file) : parts_(std::make_unique<Parts>()) { parts_->file = file; }
 SolidBody::SolidBody(SolidBody&&) noexcept = default;
 SolidBody& SolidBody::operator=(SolidBody&&) noexcept = default;
 SolidBody::~SolidBody() = default;
 
+SolidBody::Parts& SolidBody::own() {
+  if (!parts_) parts_ = std::make_unique<Parts>();
+  return *parts_;
+}
+
 std::string_view SolidBody::id(std::uint32_t k) const {
-  const std::uint32_t from = k == 0 ? 0 : id_ends_[k - 1];
-  return std::string_view(id_chars_).substr(from, id_ends_[k] - from);
+  const Parts& p = parts();
+  const std::uint32_t from = k == 0 ? 0 : p.id_ends[k - 1];
+  return std::string_view(p.id_chars).substr(from, p.id_ends[k] - from);
 }
 
 std::uint32_t SolidBody::intern(std::string_view key) {
-  const std::size_t count = id_ends_.size();
+  Parts& p = own();
+  const std::size_t count = p.id_ends.size();
   if (count <= kFewIds) {
     for (std::uint32_t k = 0; k < count; ++k)
       if (id(k) == key) return k;
   } else {
-    if (id_index_.empty())
-      for (std::uint32_t k = 0; k < count; ++k) id_index_.emplace(std::string(id(k)), k);
-    const auto it = id_index_.find(std::string(key));
-    if (it != id_index_.end()) return it->second;
+    if (p.id_index.empty())
+      for (std::uint32_t k = 0; k < count; ++k) p.id_index.emplace(std::string(id(k)), k);
+    const auto it = p.id_index.find(std::string(key));
+    if (it != p.id_index.end()) return it->second;
   }
   const auto index = static_cast<std::uint32_t>(count);
-  id_chars_.append(key);
-  id_ends_.push_back(static_cast<std::uint32_t>(id_chars_.size()));
-  if (!id_index_.empty()) id_index_.emplace(std::string(key), index);
+  p.id_chars.append(key);
+  p.id_ends.push_back(static_cast<std::uint32_t>(p.id_chars.size()));
+  if (!p.id_index.empty()) p.id_index.emplace(std::string(key), index);
   return index;
 }
 
 void SolidBody::add_vertex(std::uint32_t id, std::array<double, 3> at, std::uint32_t begin,
                            std::uint32_t end) {
-  items_.push_back({ItemKind::Vertex, begin, end});
-  vertices_.push_back({id, kLiteral, at});
+  Parts& p = own();
+  p.items.push_back({ItemKind::Vertex, begin, end});
+  p.vertices.push_back({id, kLiteral, at});
 }
 
 void SolidBody::add_vertex(std::uint32_t id, std::unique_ptr<Expr> position, std::uint32_t begin,
                            std::uint32_t end) {
-  items_.push_back({ItemKind::Vertex, begin, end});
-  vertices_.push_back({id, static_cast<std::uint32_t>(positions_.size()), {}});
-  positions_.push_back(std::move(position));
+  Parts& p = own();
+  p.items.push_back({ItemKind::Vertex, begin, end});
+  p.vertices.push_back({id, static_cast<std::uint32_t>(p.positions.size()), {}});
+  p.positions.push_back(std::move(position));
 }
 
 void SolidBody::add_face(std::span<const std::uint32_t> refs, std::span<const std::uint32_t> ring_ends,
                          std::uint32_t begin, std::uint32_t end) {
-  items_.push_back({ItemKind::Face, begin, end});
-  const auto base = static_cast<std::uint32_t>(refs_.size());
-  refs_.insert(refs_.end(), refs.begin(), refs.end());
-  for (const std::uint32_t e : ring_ends) ring_ends_.push_back(base + e);
-  face_ends_.push_back(static_cast<std::uint32_t>(ring_ends_.size()));
+  Parts& p = own();
+  p.items.push_back({ItemKind::Face, begin, end});
+  const auto base = static_cast<std::uint32_t>(p.refs.size());
+  p.refs.insert(p.refs.end(), refs.begin(), refs.end());
+  for (const std::uint32_t e : ring_ends) p.ring_ends.push_back(base + e);
+  p.face_ends.push_back(static_cast<std::uint32_t>(p.ring_ends.size()));
 }
 
 void SolidBody::add_line(std::uint32_t from, std::uint32_t to, std::uint32_t begin, std::uint32_t end) {
-  items_.push_back({ItemKind::Line, begin, end});
-  lines_.push_back({from, to});
+  Parts& p = own();
+  p.items.push_back({ItemKind::Line, begin, end});
+  p.lines.push_back({from, to});
 }
 
 namespace {
@@ -80,39 +93,43 @@ std::vector<T> exact_copy(std::vector<T>& from) {
 }  // namespace
 
 SolidBody SolidBody::take_compact() {
-  SolidBody out(file_);
-  out.items_ = exact_copy(items_);
-  out.id_chars_ = std::string(id_chars_);
-  id_chars_.clear();
-  out.id_ends_ = exact_copy(id_ends_);
-  id_index_.clear();
-  out.vertices_ = exact_copy(vertices_);
-  out.positions_ = exact_copy(positions_);
-  out.refs_ = exact_copy(refs_);
-  out.ring_ends_ = exact_copy(ring_ends_);
-  out.face_ends_ = exact_copy(face_ends_);
-  out.lines_ = exact_copy(lines_);
+  Parts& p = own();
+  SolidBody out(p.file);
+  Parts& q = *out.parts_;
+  q.items = exact_copy(p.items);
+  q.id_chars = std::string(p.id_chars);
+  p.id_chars.clear();
+  q.id_ends = exact_copy(p.id_ends);
+  p.id_index.clear();
+  q.vertices = exact_copy(p.vertices);
+  q.positions = exact_copy(p.positions);
+  q.refs = exact_copy(p.refs);
+  q.ring_ends = exact_copy(p.ring_ends);
+  q.face_ends = exact_copy(p.face_ends);
+  q.lines = exact_copy(p.lines);
   return out;
 }
 
 void SolidBody::restart(FileId file) {
-  file_ = file;
-  items_.clear();
-  id_chars_.clear();
-  id_ends_.clear();
-  id_index_.clear();
-  vertices_.clear();
-  positions_.clear();
-  refs_.clear();
-  ring_ends_.clear();
-  face_ends_.clear();
-  lines_.clear();
+  Parts& p = own();
+  p.file = file;
+  p.items.clear();
+  p.id_chars.clear();
+  p.id_ends.clear();
+  p.id_index.clear();
+  p.vertices.clear();
+  p.positions.clear();
+  p.refs.clear();
+  p.ring_ends.clear();
+  p.face_ends.clear();
+  p.lines.clear();
 }
 
 std::span<const std::uint32_t> SolidBody::ring(std::size_t face, std::size_t r) const {
+  const Parts& p = parts();
   const std::size_t ring = first_ring(face) + r;
-  const std::size_t from = ring == 0 ? 0 : ring_ends_[ring - 1];
-  return {refs_.data() + from, ring_ends_[ring] - from};
+  const std::size_t from = ring == 0 ? 0 : p.ring_ends[ring - 1];
+  return {p.refs.data() + from, p.ring_ends[ring] - from};
 }
 
 }  // namespace hlr::lang

@@ -41,7 +41,7 @@ class SolidBody {
   SolidBody& operator=(SolidBody&&) noexcept;
   ~SolidBody();
 
-  FileId file() const { return file_; }
+  FileId file() const { return parts().file; }
 
   // The vertex id `key` (a number by its value in decimal, so "01" is "1"; a name as written), its
   // index among this block's ids, added when new.
@@ -59,35 +59,44 @@ class SolidBody {
   void restart(FileId file);
 
   // In the order written; the k-th Vertex item is vertices()[k], the k-th Face item face k, and so on.
-  const std::vector<Item>& items() const { return items_; }
-  std::size_t id_count() const { return id_ends_.size(); }
+  const std::vector<Item>& items() const { return parts().items; }
+  std::size_t id_count() const { return parts().id_ends.size(); }
   std::string_view id(std::uint32_t k) const;
-  const std::vector<Vertex>& vertices() const { return vertices_; }
-  const Expr& position(const Vertex& v) const { return *positions_[v.position]; }
-  std::size_t position_count() const { return positions_.size(); }
-  const Expr& position_at(std::size_t k) const { return *positions_[k]; }
+  const std::vector<Vertex>& vertices() const { return parts().vertices; }
+  const Expr& position(const Vertex& v) const { return *parts().positions[v.position]; }
+  std::size_t position_count() const { return parts().positions.size(); }
+  const Expr& position_at(std::size_t k) const { return *parts().positions[k]; }
 
-  std::size_t face_count() const { return face_ends_.size(); }
-  std::size_t ring_count(std::size_t face) const { return face_ends_[face] - first_ring(face); }
+  std::size_t face_count() const { return parts().face_ends.size(); }
+  std::size_t ring_count(std::size_t face) const { return parts().face_ends[face] - first_ring(face); }
   // Ring r (0: the outer ring, then the holes) of a face, as ids.
   std::span<const std::uint32_t> ring(std::size_t face, std::size_t r) const;
-  const std::vector<std::array<std::uint32_t, 2>>& lines() const { return lines_; }
-  std::size_t reference_count() const { return refs_.size(); }  // ids named by all faces' rings
+  const std::vector<std::array<std::uint32_t, 2>>& lines() const { return parts().lines; }
+  std::size_t reference_count() const { return parts().refs.size(); }  // ids named by all faces' rings
 
  private:
-  std::uint32_t first_ring(std::size_t face) const { return face == 0 ? 0 : face_ends_[face - 1]; }
+  std::uint32_t first_ring(std::size_t face) const { return face == 0 ? 0 : parts().face_ends[face - 1]; }
 
-  FileId file_ = 0;
-  std::vector<Item> items_;
-  std::string id_chars_;                                     // the ids back to back
-  std::vector<std::uint32_t> id_ends_;                       // end of each id in id_chars_
-  std::unordered_map<std::string, std::uint32_t> id_index_;  // while parsing a block with many ids
-  std::vector<Vertex> vertices_;
-  std::vector<std::unique_ptr<Expr>> positions_;
-  std::vector<std::uint32_t> refs_;       // every ring of every face, back to back
-  std::vector<std::uint32_t> ring_ends_;  // end of each ring in refs_
-  std::vector<std::uint32_t> face_ends_;  // end of each face's rings in ring_ends_
-  std::vector<std::array<std::uint32_t, 2>> lines_;
+  // The arrays live behind one pointer: a statement holding a SolidBody stays small (a script's
+  // statements are a vector of variants as large as their largest kind, and this was 288 bytes of it).
+  struct Parts {
+    FileId file = 0;
+    std::vector<Item> items;
+    std::string id_chars;                                     // the ids back to back
+    std::vector<std::uint32_t> id_ends;                       // end of each id in id_chars
+    std::unordered_map<std::string, std::uint32_t> id_index;  // while parsing a block with many ids
+    std::vector<Vertex> vertices;
+    std::vector<std::unique_ptr<Expr>> positions;
+    std::vector<std::uint32_t> refs;       // every ring of every face, back to back
+    std::vector<std::uint32_t> ring_ends;  // end of each ring in refs
+    std::vector<std::uint32_t> face_ends;  // end of each face's rings in ring_ends
+    std::vector<std::array<std::uint32_t, 2>> lines;
+  };
+  static const Parts kNoParts;  // what a moved-from body reads as
+  const Parts& parts() const { return parts_ ? *parts_ : kNoParts; }
+  Parts& own();  // the parts, made when missing
+
+  std::unique_ptr<Parts> parts_;
 };
 
 }  // namespace hlr::lang

@@ -22,8 +22,14 @@ void keep_freed_memory() {
 #if defined(__GLIBC__)
   constexpr int kLargestMmapThreshold = 32 << 20;  // glibc refuses more (HEAP_MAX_SIZE / 2 on 64 bits)
   constexpr int kNeverTrim = -1;                   // as an unsigned size: no trimming at all
+  // A thread's arena takes its heaps of 64 MiB whole rather than growing them a little at a time: each
+  // growth was a system call, and on huge pages a part-grown heap's tail fell back to 4 KiB pages (the
+  // 64 000-box city's `check`, evaluated on a thread, 0.97 → 0.59 s). Address space only: what is not
+  // touched costs nothing.
+  constexpr int kTopPad = 64 << 20;
   mallopt(M_MMAP_THRESHOLD, kLargestMmapThreshold);
   mallopt(M_TRIM_THRESHOLD, kNeverTrim);
+  mallopt(M_TOP_PAD, kTopPad);
 #endif
 }
 

@@ -114,8 +114,12 @@ void Evaluator::exec_def(const lang::DefStmt& def, const ScopePtr& scope) {
   function->body = UserFunction{&def, scope};
   define(scope, def.name, Value::function(std::move(function)));
   // The closure now points at `scope`, which holds it: remember the scope so ~Evaluator can break the
-  // cycle. Forget scopes that died meanwhile, so a def inside a long loop does not grow the list.
-  def_scopes_.push_back(scope);
+  // cycle. Forget scopes that died meanwhile, so a def inside a long loop does not grow the list; a run
+  // of defs in one scope (15 000 at the top level of a generated script) is one entry, not one each,
+  // or ~Evaluator would clear that scope's table again for every def.
+  const bool known = !def_scopes_.empty() && !def_scopes_.back().owner_before(scope) &&
+                     !scope.owner_before(def_scopes_.back());
+  if (!known) def_scopes_.push_back(scope);
   if (def_scopes_.size() >= 2 * def_scopes_pruned_at_) {
     std::erase_if(def_scopes_, [](const std::weak_ptr<Scope>& w) { return w.expired(); });
     def_scopes_pruned_at_ = std::max<std::size_t>(64, def_scopes_.size());
