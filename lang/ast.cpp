@@ -168,7 +168,7 @@ std::string dump(const Expr& expr) {
             return out + ")";
           },
           [](const ListComprehension& c) {
-            return "(comp " + dump(*c.element) + " for " + c.variable.text + " in " + dump(*c.iterable) +
+            return "(comp " + dump(*c.element) + " for " + c.variable->text + " in " + dump(*c.iterable) +
                    (c.condition ? " if " + dump(*c.condition) : "") + ")";
           },
           [](const NameRef& n) { return n.name; },
@@ -179,7 +179,7 @@ std::string dump(const Expr& expr) {
             return std::string("(") + to_string(b.op) + " " + dump(*b.lhs) + " " + dump(*b.rhs) + ")";
           },
           [](const CallExpr& c) { return "(call " + dump(*c.callee) + arguments_text(c.args) + ")"; },
-          [](const MemberExpr& m) { return "(. " + dump(*m.object) + " " + m.member.text + ")"; },
+          [](const MemberExpr& m) { return "(. " + dump(*m.object) + " " + m.member->text + ")"; },
           [](const IndexExpr& i) { return "(index " + dump(*i.object) + " " + dump(*i.index) + ")"; },
       },
       expr.node);

@@ -58,9 +58,11 @@ struct ListLit {  // [a, b, ...]
   std::vector<ExprPtr> items;
 };
 // [element for variable in iterable] or [... if condition]: `variable` is bound afresh per item.
+// The names below are boxed: an Expr is as large as its largest kind, and a Name (64 bytes) inline made
+// every node of a script 136 bytes instead of 96.
 struct ListComprehension {
   ExprPtr element;
-  Name variable;
+  std::unique_ptr<Name> variable;
   ExprPtr iterable;
   ExprPtr condition;  // null without `if`
 };
@@ -76,10 +78,10 @@ struct UnaryExpr {
   ExprPtr operand;
 };
 struct BinaryExpr {
-  BinaryOp op;
   ExprPtr lhs;
   ExprPtr rhs;
   SourceSpan op_span;  // the operator token
+  BinaryOp op;         // last: packed beside the span
 };
 struct Argument {
   std::optional<Name> label;  // `eye:` in lookat(eye: ...); empty for a positional argument
@@ -92,7 +94,7 @@ struct CallExpr {
 };
 struct MemberExpr {  // v.x
   ExprPtr object;
-  Name member;
+  std::unique_ptr<Name> member;
 };
 struct IndexExpr {  // l[0]
   ExprPtr object;

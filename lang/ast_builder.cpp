@@ -113,7 +113,8 @@ struct action<g::list_lit> {
   static void apply(const Input& in, ParseState& s) {
     const std::size_t first = first_child(s);
     if (child_count(s) >= 3 && holds<Name>(s.items[first + 1])) {
-      ListComprehension comp{box(take<Expr>(s.items[first])), take<Name>(s.items[first + 1]),
+      ListComprehension comp{box(take<Expr>(s.items[first])),
+                             std::make_unique<Name>(take<Name>(s.items[first + 1])),
                              box(take<Expr>(s.items[first + 2])), nullptr};
       if (child_count(s) == 4) comp.condition = box(take<Expr>(s.items[first + 3]));
       replace_children(s, with_height(Expr{span_of(in, s), std::move(comp)}, s));
@@ -194,7 +195,8 @@ struct action<g::postfix_expr> {
       } else if (holds<MemberSuffix>(suffix)) {
         auto member = take<MemberSuffix>(suffix);
         const SourceSpan span = join(acc.span, member.span);
-        acc = with_height(Expr{span, MemberExpr{box(std::move(acc)), std::move(member.member)}}, s);
+        acc = with_height(
+            Expr{span, MemberExpr{box(std::move(acc)), std::make_unique<Name>(std::move(member.member))}}, s);
       } else {
         auto index = take<IndexSuffix>(suffix);
         const SourceSpan span = join(acc.span, index.span);

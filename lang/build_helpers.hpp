@@ -131,7 +131,7 @@ struct fold_binary {
       Expr rhs = take<Expr>(s.items[i + 1]);
       const SourceSpan span = join(acc.span, rhs.span);
       acc = with_height(
-          Expr{span, BinaryExpr{binary_op(op.text), box(std::move(acc)), box(std::move(rhs)), op.span}}, s);
+          Expr{span, BinaryExpr{box(std::move(acc)), box(std::move(rhs)), op.span, binary_op(op.text)}}, s);
     }
     replace_children(s, std::move(acc));
   }

@@ -1,20 +1,38 @@
 #include "lang/source.hpp"
 
 #include <algorithm>
+#include <cctype>
+#include <cstring>
 
 namespace hlr::lang {
 
 SourceFile::SourceFile(FileId id, std::string name, std::string text)
     : id_(id), name_(std::move(name)), text_(std::move(text)) {
-  line_starts_.push_back(0);
-  line_is_ascii_.push_back(true);
-  for (std::size_t i = 0; i < text_.size(); ++i) {
-    if (static_cast<unsigned char>(text_[i]) >= 0x80U) line_is_ascii_.back() = false;
-    if (text_[i] == '\n') {
-      line_starts_.push_back(i + 1);
-      line_is_ascii_.push_back(true);
-    }
+  // Counted first, so the tables are allocated once (a generated script has millions of lines); then
+  // each line is found by memchr and checked for non-ASCII bytes in one branch-free pass.
+  const std::size_t lines = 1 + static_cast<std::size_t>(std::count(text_.begin(), text_.end(), '\n'));
+  line_starts_.reserve(lines);
+  line_is_ascii_.reserve(lines);
+  const char* const data = text_.data();
+  std::size_t begin = 0;
+  for (;;) {
+    const void* newline = std::memchr(data + begin, '\n', text_.size() - begin);
+    const std::size_t end =
+        newline ? static_cast<std::size_t>(static_cast<const char*>(newline) - data) : text_.size();
+    unsigned char bits = 0;
+    for (std::size_t i = begin; i < end; ++i) bits |= static_cast<unsigned char>(data[i]);
+    line_starts_.push_back(begin);
+    line_is_ascii_.push_back(bits < 0x80U);
+    if (!newline) break;
+    begin = end + 1;
   }
+}
+
+std::size_t SourceFile::lines_starting_with_letter() const {
+  std::size_t n = 0;
+  for (const std::size_t start : line_starts_)
+    if (start < text_.size() && std::isalpha(static_cast<unsigned char>(text_[start]))) ++n;
+  return n;
 }
 
 std::size_t count_code_points(std::string_view text) {

@@ -46,6 +46,8 @@ class SourceFile {
   // Line `line` (1-based) without its line terminator; empty when out of range.
   std::string_view line_text(std::uint32_t line) const;
   std::uint32_t line_count() const { return static_cast<std::uint32_t>(line_starts_.size()); }
+  // Lines whose first byte is a letter: about the number of top-level statements, for a reservation.
+  std::size_t lines_starting_with_letter() const;
 
  private:
   FileId id_;

@@ -87,7 +87,7 @@ Value Evaluator::eval_comprehension(const lang::ListComprehension& comp, const l
   for (std::size_t i = 0; i < n; ++i) {
     budget_.step(expr.span);
     auto item_scope = std::make_shared<Scope>(scope);  // one scope per item: closures keep their own item
-    item_scope->define(comp.variable.text, sequence_item(items, i), comp.variable.span);
+    item_scope->define(comp.variable->text, sequence_item(items, i), comp.variable->span);
     if (comp.condition) {
       const Value keep = eval(*comp.condition, item_scope);
       if (!keep.is(ValueKind::Bool))
@@ -153,15 +153,15 @@ Value Evaluator::eval_binary(const lang::BinaryExpr& bin, const lang::Expr& expr
 
 Value Evaluator::eval_member(const lang::MemberExpr& member, const ScopePtr& scope) {
   const Value object = eval(*member.object, scope);
-  const std::string& m = member.member.text;
+  const std::string& m = member.member->text;
   if (object.is(ValueKind::Vector)) {
     const Vector3 v = object.as_vector();
     if (m == "x") return Value::number(v.x);
     if (m == "y") return Value::number(v.y);
     if (m == "z") return Value::number(v.z);
-    fail(member.member.span, "a vector has no member '" + m + "'", "use .x, .y or .z");
+    fail(member.member->span, "a vector has no member '" + m + "'", "use .x, .y or .z");
   }
-  fail(member.member.span, kind_with_article(object.kind()) + " has no member '" + m + "'",
+  fail(member.member->span, kind_with_article(object.kind()) + " has no member '" + m + "'",
        "only vectors have members (.x, .y, .z)");
 }
 

@@ -232,7 +232,7 @@ class Resolver {
                    [&](const lang::ListComprehension& c) {
                      expr(*c.iterable, scope);
                      StaticScope item{&scope, scope.function_level, {}};
-                     define(item, c.variable.text);
+                     define(item, c.variable->text);
                      optional(c.condition, item);
                      expr(*c.element, item);
                    },

@@ -273,9 +273,9 @@ TEST(Parser, ListComprehensions) {
   const auto& comp = std::get<ListComprehension>(e.node);
   EXPECT_EQ(span_text(text, e.span), "[ i * i for i in 0..n if i != 3 ]");
   EXPECT_EQ(span_text(text, comp.element->span), "i * i");
-  EXPECT_EQ(comp.variable.text, "i");
-  EXPECT_EQ(comp.variable.span.begin.column, 27U);
-  EXPECT_EQ(span_text(text, comp.variable.span), "i");
+  EXPECT_EQ(comp.variable->text, "i");
+  EXPECT_EQ(comp.variable->span.begin.column, 27U);
+  EXPECT_EQ(span_text(text, comp.variable->span), "i");
   EXPECT_EQ(span_text(text, comp.iterable->span), "0..n");
   ASSERT_TRUE(comp.condition);
   EXPECT_EQ(span_text(text, comp.condition->span), "i != 3");
