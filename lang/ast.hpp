@@ -84,7 +84,8 @@ struct BinaryExpr {
   BinaryOp op;         // last: packed beside the span
 };
 struct Argument {
-  std::optional<Name> label;  // `eye:` in lookat(eye: ...); empty for a positional argument
+  std::unique_ptr<Name>
+      label;  // `eye:` in lookat(eye: ...); null for a positional argument (boxed: most are)
   ExprPtr value;
   SourceSpan span;
 };

@@ -173,7 +173,7 @@ struct make_argument {
     const std::size_t first = first_child(s);
     Argument arg;
     arg.span = span_of(in, s);
-    if (holds<Name>(s.items[first])) arg.label = take<Name>(s.items[first]);
+    if (holds<Name>(s.items[first])) arg.label = std::make_unique<Name>(take<Name>(s.items[first]));
     arg.value = box(take<Expr>(s.items.back()));
     replace_children(s, std::move(arg));
   }

@@ -82,11 +82,11 @@ struct ParseState {
   // two-word argument just stored, was 6 % of parsing general code.
   class MarkStack {
    public:
-    void push(std::size_t height) {
+    [[gnu::always_inline]] void push(std::size_t height) {
       if (size_ == heights_.size()) heights_.resize(heights_.size() * 2 + 64);
       heights_[size_++] = height;
     }
-    void pop() { --size_; }
+    [[gnu::always_inline]] void pop() { --size_; }
     std::size_t back() const { return heights_[size_ - 1]; }
     void clear() { size_ = 0; }
 
