@@ -105,9 +105,8 @@ struct ParseState {
   bool plain_solid_items = true;  // ParseOptions::plain_solid_items
 
   std::size_t offset(const char* p) const { return static_cast<std::size_t>(p - base); }
-  std::uint32_t offset32(const char* p) const {
-    return static_cast<std::uint32_t>(p - base);
-  }  // SourcePos's width
+  // The same at SourcePos's width.
+  std::uint32_t offset32(const char* p) const { return static_cast<std::uint32_t>(p - base); }
   SourceSpan span(const char* begin, const char* end) const {
     return file->span(offset(begin), offset(end), line_hint);
   }
