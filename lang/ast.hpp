@@ -107,11 +107,15 @@ struct IndexExpr {  // l[0]
 inline constexpr std::uint32_t kMaxExprHeight = 256;
 
 struct Expr {
+  using Node = std::variant<NumberLit, BoolLit, StringLit, VectorLit, ListLit, ListComprehension, NameRef,
+                            UnaryExpr, BinaryExpr, CallExpr, MemberExpr, IndexExpr>;
+  Expr() = default;
+  Expr(SourceSpan where, Node what) : span(where), node(std::move(what)) {}
+
   SourceSpan span;
-  std::variant<NumberLit, BoolLit, StringLit, VectorLit, ListLit, ListComprehension, NameRef, UnaryExpr,
-               BinaryExpr, CallExpr, MemberExpr, IndexExpr>
-      node;
-  std::uint32_t height = 1;  // nodes on the longest path down from here, this one included
+  std::uint32_t height = 1;  // nodes on the longest path down from here, this one included; beside the
+                             // 12-byte span it fills what would be padding (a script holds millions)
+  Node node;
 };
 
 // ---- statements --------------------------------------------------------------------------------

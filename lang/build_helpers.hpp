@@ -77,7 +77,7 @@ inline Expr with_height(Expr&& e, const ParseState& s) {
       e.node);
   e.height = below + 1;
   if (e.height > kMaxExprHeight) {
-    throw SyntaxError{s.base + e.span.begin.offset, "expression too deep: more than 256 nested operations",
+    throw SyntaxError{s.base + e.span.begin, "expression too deep: more than 256 nested operations",
                       "split it with 'let', or build long sums with a loop"};
   }
   return std::move(e);

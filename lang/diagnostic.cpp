@@ -18,38 +18,41 @@ const char* to_string(Severity severity) {
 }
 
 std::string location(const SourceFile& file, const SourceSpan& span) {
-  return file.name() + ":" + std::to_string(span.begin.line) + ":" + std::to_string(span.begin.column);
+  const SourcePos begin = file.position(span.begin);
+  return file.name() + ":" + std::to_string(begin.line) + ":" + std::to_string(begin.column);
 }
 
 namespace {
 
 // The quoted source line and a caret line under `span`, gutter included.
 std::string excerpt(const SourceFile& file, const SourceSpan& span) {
-  const std::string_view line = file.line_text(span.begin.line);
-  const std::string number = std::to_string(span.begin.line);
+  const SourcePos begin = file.position(span.begin);
+  const SourcePos end = file.position(span.end);
+  const std::string_view line = file.line_text(begin.line);
+  const std::string number = std::to_string(begin.line);
   const std::string gutter(std::max<std::size_t>(number.size(), 4), ' ');
   std::string out =
       std::string(gutter.size() - number.size(), ' ') + number + " | " + std::string(line) + "\n";
   out += gutter + " | ";
   // Blank out what precedes the caret, keeping tabs so the caret lines up; one space per code point.
   std::size_t column = 1;
-  for (std::size_t i = 0; i < line.size() && column < span.begin.column; ++i) {
+  for (std::size_t i = 0; i < line.size() && column < begin.column; ++i) {
     const auto byte = static_cast<unsigned char>(line[i]);
     if ((byte & 0xC0U) == 0x80U) continue;
     out += line[i] == '\t' ? '\t' : ' ';
     ++column;
   }
-  while (column < span.begin.column) {  // caret past the end of the line
+  while (column < begin.column) {  // caret past the end of the line
     out += ' ';
     ++column;
   }
   out += '^';
   std::size_t width = 1;
-  if (span.end.line == span.begin.line && span.end.column > span.begin.column) {
-    width = span.end.column - span.begin.column;
-  } else if (span.end.line > span.begin.line) {
+  if (end.line == begin.line && end.column > begin.column) {
+    width = end.column - begin.column;
+  } else if (end.line > begin.line) {
     const std::size_t line_width = count_code_points(line) + 1;
-    width = line_width > span.begin.column ? line_width - span.begin.column : 1;
+    width = line_width > begin.column ? line_width - begin.column : 1;
   }
   out += std::string(width - 1, '~');
   return out + "\n";

@@ -107,10 +107,7 @@ struct ParseState {
   std::size_t offset(const char* p) const { return static_cast<std::size_t>(p - base); }
   // The same at SourcePos's width.
   std::uint32_t offset32(const char* p) const { return static_cast<std::uint32_t>(p - base); }
-  SourceSpan span(const char* begin, const char* end) const {
-    return file->span(offset(begin), offset(end), line_hint);
-  }
-  mutable std::size_t line_hint = 0;  // where SourceFile::position looks first
+  SourceSpan span(const char* begin, const char* end) const { return file->span(offset(begin), offset(end)); }
 };
 
 }  // namespace hlr::lang::detail

@@ -273,9 +273,8 @@ ParseResult parse(std::shared_ptr<const SourceFile> file, const ParseOptions& op
   }
   if (result.diagnostics.size() < kMaxErrors) {
     check_syntax(script, result.diagnostics);
-    std::stable_sort(
-        result.diagnostics.begin(), result.diagnostics.end(),
-        [](const Diagnostic& a, const Diagnostic& b) { return a.span.begin.offset < b.span.begin.offset; });
+    std::stable_sort(result.diagnostics.begin(), result.diagnostics.end(),
+                     [](const Diagnostic& a, const Diagnostic& b) { return a.span.begin < b.span.begin; });
   }
   if (result.diagnostics.empty()) result.script = std::move(script);
   return result;

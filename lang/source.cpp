@@ -44,26 +44,9 @@ std::size_t count_code_points(std::string_view text) {
 }
 
 SourcePos SourceFile::position(std::size_t offset) const {
-  std::size_t line_hint = 0;
-  return position(offset, line_hint);
-}
-
-SourcePos SourceFile::position(std::size_t offset, std::size_t& line_hint) const {
   offset = std::min(offset, text_.size());
-  const auto on_line = [&](std::size_t line) {
-    return line < line_starts_.size() && line_starts_[line] <= offset &&
-           (line + 1 == line_starts_.size() || offset < line_starts_[line + 1]);
-  };
-  std::size_t line_index = line_hint;
-  if (!on_line(line_index)) {
-    if (on_line(line_index + 1)) {
-      ++line_index;
-    } else {
-      const auto it = std::upper_bound(line_starts_.begin(), line_starts_.end(), offset);
-      line_index = static_cast<std::size_t>(it - line_starts_.begin()) - 1;
-    }
-  }
-  line_hint = line_index;
+  const auto it = std::upper_bound(line_starts_.begin(), line_starts_.end(), offset);
+  const auto line_index = static_cast<std::size_t>(it - line_starts_.begin()) - 1;
   const std::size_t start = line_starts_[line_index];
   const std::size_t column =
       1 + (line_is_ascii_[line_index]
@@ -71,16 +54,6 @@ SourcePos SourceFile::position(std::size_t offset, std::size_t& line_hint) const
                : count_code_points(std::string_view(text_).substr(start, offset - start)));
   return {static_cast<std::uint32_t>(line_index + 1), static_cast<std::uint32_t>(column),
           static_cast<std::uint32_t>(offset)};
-}
-
-SourceSpan SourceFile::span(std::size_t begin, std::size_t end) const {
-  std::size_t line_hint = 0;
-  return span(begin, end, line_hint);
-}
-
-SourceSpan SourceFile::span(std::size_t begin, std::size_t end, std::size_t& line_hint) const {
-  const SourcePos first = position(begin, line_hint);
-  return {id_, first, position(std::max(begin, end), line_hint)};
 }
 
 std::string_view SourceFile::line_text(std::uint32_t line) const {

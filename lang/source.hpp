@@ -1,8 +1,11 @@
 // Source text and positions. A SourceFile owns one script's text and knows where its lines start;
-// a SourceSpan names a stretch of it by file id, begin and end. Lines and columns are 1-based;
-// a column counts code points (UTF-8), so a tab is one column and 'é' is one column.
+// a SourceSpan names a stretch of it by file id and byte offsets. Lines and columns are 1-based;
+// a column counts code points (UTF-8), so a tab is one column and 'é' is one column. A span holds
+// offsets only (12 bytes, and the parser never looks up a line): the line and column are asked of the
+// SourceFile when a message is written, which is rare.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <string>
 #include <string_view>
@@ -19,11 +22,11 @@ struct SourcePos {
   friend bool operator==(const SourcePos&, const SourcePos&) = default;
 };
 
-// [begin, end): end is one past the last character of the construct.
+// [begin, end): byte offsets; end is one past the last character of the construct.
 struct SourceSpan {
   FileId file = 0;
-  SourcePos begin;
-  SourcePos end;
+  std::uint32_t begin = 0;
+  std::uint32_t end = 0;
   friend bool operator==(const SourceSpan&, const SourceSpan&) = default;
 };
 
@@ -37,12 +40,9 @@ class SourceFile {
 
   // Position of a byte offset (clamped to the text's size).
   SourcePos position(std::size_t offset) const;
-  SourceSpan span(std::size_t begin, std::size_t end) const;
-  // The same, starting the search for the line at `line_hint` (0-based) and leaving there the line
-  // found: a parser asks about offsets close to each other, usually on the same line or the next, and
-  // then no search is needed.
-  SourcePos position(std::size_t offset, std::size_t& line_hint) const;
-  SourceSpan span(std::size_t begin, std::size_t end, std::size_t& line_hint) const;
+  SourceSpan span(std::size_t begin, std::size_t end) const {
+    return {id_, static_cast<std::uint32_t>(begin), static_cast<std::uint32_t>(std::max(begin, end))};
+  }
   // Line `line` (1-based) without its line terminator; empty when out of range.
   std::string_view line_text(std::uint32_t line) const;
   std::uint32_t line_count() const { return static_cast<std::uint32_t>(line_starts_.size()); }

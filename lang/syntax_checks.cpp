@@ -173,9 +173,8 @@ void check_syntax(const Script& script, std::vector<Diagnostic>& out) {
   const std::size_t first = out.size();
   Checker(out).block(script.statements);
   // Errors come out in source order.
-  std::stable_sort(
-      out.begin() + static_cast<std::ptrdiff_t>(first), out.end(),
-      [](const Diagnostic& a, const Diagnostic& b) { return a.span.begin.offset < b.span.begin.offset; });
+  std::stable_sort(out.begin() + static_cast<std::ptrdiff_t>(first), out.end(),
+                   [](const Diagnostic& a, const Diagnostic& b) { return a.span.begin < b.span.begin; });
 }
 
 }  // namespace hlr::lang

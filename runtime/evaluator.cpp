@@ -61,8 +61,7 @@ void Evaluator::define(const ScopePtr& scope, const lang::Name& name, Value valu
     d.span = name.span;
     d.message = "'" + name.text + "' is already defined in this scope";
     d.hint = "names cannot be rebound; choose another name (an inner block or function may shadow it)";
-    if (existing->span.end.offset > 0)
-      d.notes.push_back({existing->span, "'" + name.text + "' was defined here"});
+    if (existing->span.end > 0) d.notes.push_back({existing->span, "'" + name.text + "' was defined here"});
     throw EvalError(std::move(d));
   }
   scope->define(name.text, std::move(value), name.span);

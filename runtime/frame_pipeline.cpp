@@ -361,7 +361,7 @@ class FrameSink {
       }
     }
     for (lang::Diagnostic& w : job.warnings)
-      if (seen_.emplace(w.span.file, w.span.begin.offset, w.span.end.offset, w.message).second)
+      if (seen_.emplace(w.span.file, w.span.begin, w.span.end, w.message).second)
         result_.warnings.push_back(std::move(w));
     ++result_.frame_count;
     done_.push_back(frame);

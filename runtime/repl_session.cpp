@@ -43,7 +43,7 @@ bool incomplete(const std::string& text, const lang::ParseResult& r) {
   if (r.ok() || r.diagnostics.empty()) return false;
   const lang::Diagnostic& d = r.diagnostics.front();
   if (d.message.rfind("unterminated string", 0) == 0) return false;  // strings end at the line's end
-  return d.span.begin.offset >= text.find_last_not_of(" \t\r\n") + 1;
+  return d.span.begin >= text.find_last_not_of(" \t\r\n") + 1;
 }
 
 std::string diagnostics_text(const lang::ParseResult& r) {
@@ -464,7 +464,7 @@ std::string ReplSession::view_text(const std::vector<Chunk>& chunks) const {
       const auto* camera = std::get_if<lang::CameraStmt>(&stmt->node);
       if (!camera || (camera_ && camera->name.text != *camera_)) continue;
       const lang::SourceSpan& span = camera->value->span;
-      const std::string expr = chunk->text.substr(span.begin.offset, span.end.offset - span.begin.offset);
+      const std::string expr = chunk->text.substr(span.begin, span.end - span.begin);
       const CameraAdjustment& a = *step_;
       return text + "camera " + stepped_name_ + " = adjust(" + expr +
              ", theta: " + format_number(a.theta_deg) + ", phi: " + format_number(a.phi_deg) +

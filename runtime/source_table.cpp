@@ -129,8 +129,8 @@ void print_diagnostics(std::ostream& out, const std::vector<lang::Diagnostic>& d
 
 std::string span_text(const SourceTable& sources, const lang::SourceSpan& span) {
   const lang::SourceFile* file = sources.file(span.file);
-  if (!file || span.end.offset < span.begin.offset || span.end.offset > file->text().size()) return "...";
-  return file->text().substr(span.begin.offset, span.end.offset - span.begin.offset);
+  if (!file || span.end < span.begin || span.end > file->text().size()) return "...";
+  return file->text().substr(span.begin, span.end - span.begin);
 }
 
 }  // namespace hlr::runtime

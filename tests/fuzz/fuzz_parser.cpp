@@ -11,7 +11,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const hlr::lang::ParseResult result = hlr::lang::parse(text, "fuzz.hls");
   if (!result.source || result.ok() == !result.diagnostics.empty()) std::abort();
   for (const hlr::lang::Diagnostic& d : result.diagnostics)
-    if (d.span.begin.offset > d.span.end.offset || d.span.end.offset > text.size()) std::abort();
+    if (d.span.begin > d.span.end || d.span.end > text.size()) std::abort();
   std::ostringstream out;
   hlr::lang::print(out, result.diagnostics, *result.source);
   if (result.ok()) out << hlr::lang::dump(*result.script);

@@ -17,8 +17,8 @@ std::string reading(const std::string& text, bool plain) {
   const ParseResult r = parse(text, "t.hls", 0, ParseOptions{plain});
   std::string out;
   for (const Diagnostic& d : r.diagnostics)
-    out += "error " + std::to_string(d.span.begin.offset) + "-" + std::to_string(d.span.end.offset) + " " +
-           d.message + " | " + d.hint + "\n";
+    out += "error " + std::to_string(d.span.begin) + "-" + std::to_string(d.span.end) + " " + d.message +
+           " | " + d.hint + "\n";
   if (!r.script) return out;
   out += dump(*r.script) + "\n";
   for (const Stmt& stmt : r.script->statements) {

@@ -14,7 +14,7 @@ std::string x_at(const std::string& text, FrameTime time = {}) {
   try {
     program->evaluate(time, [&](const Evaluator& e) { shown = display(*e.global("x"), 1000); });
   } catch (const EvalError& e) {
-    return "error: " + line_col(e.diagnostics.front());
+    return "error: " + line_col(e.diagnostics.front(), program->sources());
   }
   return shown;
 }
@@ -34,7 +34,8 @@ TEST(Animation, TrackAtTheFrameDrawnOrAtAGivenTime) {
 
 TEST(Animation, MistakesAreErrorsAtTheArgument) {
   EXPECT_EQ(x_at("let x = track([[0, 0], [1, 1]], time: 0, ease: \"in_out_cubc\")\n").substr(0, 111),
-            "error: 1:48: bad argument 'ease' to track(): unknown easing \"in_out_cubc\"; did you mean 'in_out_cubic'? "
+            "error: 1:48: bad argument 'ease' to track(): unknown easing \"in_out_cubc\"; did you mean "
+            "'in_out_cubic'? "
             "(one of");
   EXPECT_EQ(
       x_at("let x = track([[0, 0], [1, (1, 1, 1)]], time: 0)\n"),

@@ -11,7 +11,7 @@ namespace hlr::runtime {
 namespace {
 
 std::string text_of(const std::string& script, const lang::SourceSpan& span) {
-  return script.substr(span.begin.offset, span.end.offset - span.begin.offset);
+  return script.substr(span.begin, span.end - span.begin);
 }
 
 // ---- paper ----------------------------------------------------------------------------------------

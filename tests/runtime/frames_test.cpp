@@ -70,7 +70,7 @@ TEST(Frames, CameraChoice) {
     choose_camera(test::run_ok("let s = 2\ndraw cube(s)"), std::nullopt, "a.hls");
     FAIL();
   } catch (const EvalError& e) {  // at what is drawn
-    EXPECT_EQ(test::line_col(e.diagnostics.front()),
+    EXPECT_EQ(test::line_col(e.diagnostics.front(), std::string("let s = 2\ndraw cube(s)")),
               "2:6: the script draws this but declares no camera to look at it");
     EXPECT_NE(e.diagnostics.front().hint.find("camera main = lookat("), std::string::npos);
   }
@@ -124,7 +124,9 @@ TEST(Frames, TheLowestFailingFrameIsReported) {
       run_pipeline(*program, {0, 1, 2, 3, 4, 5}, 24, options);
       FAIL();
     } catch (const EvalError& e) {
-      EXPECT_EQ(test::line_col(e.diagnostics.front()), "2:14: division by zero (in frame 2)") << jobs;
+      EXPECT_EQ(test::line_col(e.diagnostics.front(), program->sources()),
+                "2:14: division by zero (in frame 2)")
+          << jobs;
     }
   }
 }

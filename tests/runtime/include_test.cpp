@@ -87,7 +87,7 @@ TEST(Include, MissingFilesAndCycles) {
     FAIL();
   } catch (const EvalError& e) {
     EXPECT_EQ(e.kind, ErrorKind::Input);  // exit 66
-    EXPECT_EQ(test::line_col(e.diagnostics.front()),
+    EXPECT_EQ(test::line_col(e.diagnostics.front(), missing->sources()),
               "1:9: cannot read 'nope.hls': No such file or directory");
   }
   dir.write("b.hls", "include \"c.hls\"\n");

@@ -14,7 +14,7 @@ std::string static_errors(const std::string& text) {
   const auto program = Program::from_text("test.hls", text);
   EXPECT_TRUE(program->parsed());
   std::string out;
-  for (const lang::Diagnostic& d : program->static_errors()) out += line_col(d) + "\n";
+  for (const lang::Diagnostic& d : program->static_errors()) out += line_col(d, program->sources()) + "\n";
   return out;
 }
 
@@ -104,9 +104,9 @@ TEST(Resolver, EachUnknownNameOnceWithAHint) {
   const auto program = Program::from_text("test.hls", "let a = sqr(2) + sqr(3)\nlet b = cylnder(1, 2)\n");
   const std::vector<lang::Diagnostic>& errors = program->static_errors();
   ASSERT_EQ(errors.size(), 2U);
-  EXPECT_EQ(line_col(errors[0]), "1:9: unknown name 'sqr'");
+  EXPECT_EQ(line_col(errors[0], program->sources()), "1:9: unknown name 'sqr'");
   EXPECT_EQ(errors[0].hint, "did you mean 'sqrt'?");
-  EXPECT_EQ(line_col(errors[1]), "2:9: unknown name 'cylnder'");
+  EXPECT_EQ(line_col(errors[1], program->sources()), "2:9: unknown name 'cylnder'");
   EXPECT_EQ(errors[1].hint, "did you mean 'cylinder'?");
 }
 
@@ -118,7 +118,7 @@ TEST(Resolver, IncludedFilesAreChecked) {
   ASSERT_EQ(program->static_errors().size(), 2U);
   EXPECT_EQ(format_diagnostic(program->static_errors()[0], program->sources()).substr(0, 42),
             "parts.hls:2:17: error: unknown name 'bolt'");
-  EXPECT_EQ(line_col(program->static_errors()[1]),
+  EXPECT_EQ(line_col(program->static_errors()[1], program->sources()),
             "3:14: too many arguments to post(): it takes at most 1, got 2");
 }
 
@@ -127,7 +127,8 @@ TEST(Resolver, AMissingIncludeIsLeftToTheEvaluator) {
   // The names it would have defined are not reported: the missing file is the mistake.
   EXPECT_EQ(static_errors("include \"nowhere.hls\"\ndraw carrier\nlet b = box(1, 2, 3, 4)\n"),
             "3:22: too many arguments to box(): it takes at most 3, got 4\n");
-  EXPECT_EQ(first_error("include \"nowhere.hls\"\ndraw carrier\n").substr(0, 30), "1:9: cannot read 'nowhere.hls'");
+  EXPECT_EQ(first_error("include \"nowhere.hls\"\ndraw carrier\n").substr(0, 30),
+            "1:9: cannot read 'nowhere.hls'");
 }
 
 }  // namespace

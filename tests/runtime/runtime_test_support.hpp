@@ -20,8 +20,18 @@ namespace hlr::runtime::test {
 
 using hlr::test::TempDir;
 
-inline std::string line_col(const lang::Diagnostic& d) {
-  return std::to_string(d.span.begin.line) + ":" + std::to_string(d.span.begin.column) + ": " + d.message;
+// Spans hold offsets; the line and column come from the file the span names.
+inline std::string line_col(const lang::Diagnostic& d, const lang::SourceFile& file) {
+  const lang::SourcePos at = file.position(d.span.begin);
+  return std::to_string(at.line) + ":" + std::to_string(at.column) + ": " + d.message;
+}
+inline std::string line_col(const lang::Diagnostic& d, const SourceTable& sources) {
+  const lang::SourceFile* file = sources.file(d.span.file);
+  return file ? line_col(d, *file) : "<no file " + std::to_string(d.span.file) + ">: " + d.message;
+}
+// For a diagnostic of a script that is gone (a warning of run_ok): its text, a one-file script.
+inline std::string line_col(const lang::Diagnostic& d, const std::string& text) {
+  return line_col(d, lang::SourceFile(d.span.file, "test.hls", text));
 }
 
 // Frame `time` of `text`; a syntax or evaluation error fails the test and yields an empty scene.
@@ -44,7 +54,8 @@ inline std::string first_error(const std::string& text, FrameTime time = {}, con
   try {
     program->evaluate(time);
   } catch (const EvalError& e) {
-    return e.diagnostics.empty() ? std::string(e.what()) : line_col(e.diagnostics.front());
+    return e.diagnostics.empty() ? std::string(e.what())
+                                 : line_col(e.diagnostics.front(), program->sources());
   }
   return "<no error>";
 }
@@ -67,14 +78,14 @@ inline std::string value(const std::string& expr, const std::string& prelude = "
   SourceTable table(FileAccess(std::filesystem::current_path(), {}));
   const SourceEntry* entry =
       table.add_text("test.hls", prelude + "\nlet result__ = " + expr + "\n", "test.hls");
-  if (!entry->script) return "syntax error: " + line_col(entry->diagnostics.front());
+  if (!entry->script) return "syntax error: " + line_col(entry->diagnostics.front(), table);
   FrameScene scene;
   Evaluator evaluator(table, scene);
   try {
     evaluator.run(*entry);
     return display(*evaluator.global("result__"), 1 << 20);
   } catch (const EvalError& e) {
-    return "error: " + line_col(e.diagnostics.front());
+    return "error: " + line_col(e.diagnostics.front(), table);
   }
 }
 

@@ -85,7 +85,7 @@ TEST(SolidOptions, PlanarityLetsASlightlyWarpedFaceThrough) {
   ASSERT_EQ(relaxed.warnings.size(), 1U);
   // Asked for by the script's own option: a note (printed with --verbose), not a warning.
   EXPECT_EQ(relaxed.warnings[0].severity, lang::Severity::Note);
-  const std::string warning = test::line_col(relaxed.warnings[0]);
+  const std::string warning = test::line_col(relaxed.warnings[0], warped("(planarity: 0.003)"));
   EXPECT_EQ(warning.substr(0, deviation.size()), deviation) << warning;
   EXPECT_NE(warning.find("accepted by the planarity tolerance 0.003"), std::string::npos) << warning;
 
@@ -118,7 +118,7 @@ TEST(SolidOptions, CrossingHolesAcceptsAHoleOutsideItsFace) {
   ASSERT_EQ(kept.scene.objects.size(), 1U);
   EXPECT_EQ(kept.scene.objects[0].solid->faces[0].rings.size(), 2U);
   ASSERT_EQ(kept.warnings.size(), 1U);
-  const std::string warning = test::line_col(kept.warnings[0]);
+  const std::string warning = test::line_col(kept.warnings[0], crossing("(crossing_holes: true)"));
   EXPECT_EQ(warning.substr(0, 37), "10:3: solid 'plate': hole 1 of face 1") << warning;
   EXPECT_NE(warning.find("the face is the even-odd region of its rings"), std::string::npos) << warning;
 }
@@ -130,9 +130,10 @@ const char* kTetraFlipped =
     "draw tet\n";
 
 TEST(SolidOptions, FixWindingFalseMakesAWrongWindingAnError) {
-  const FrameScene fixed = test::run_ok(std::string("solid tet {\n") + kTetraFlipped);
+  const std::string script = std::string("solid tet {\n") + kTetraFlipped;
+  const FrameScene fixed = test::run_ok(script);
   ASSERT_EQ(fixed.warnings.size(), 1U);
-  EXPECT_EQ(test::line_col(fixed.warnings[0]).substr(0, 31), "7:3: solid 'tet': face 2 was wo");
+  EXPECT_EQ(test::line_col(fixed.warnings[0], script).substr(0, 31), "7:3: solid 'tet': face 2 was wo");
   EXPECT_EQ(test::run_ok(std::string("solid tet (fix_winding: true) {\n") + kTetraFlipped).warnings.size(),
             1U);
 
@@ -157,7 +158,8 @@ std::pair<std::string, std::string> error_and_hint(const std::string& text) {
   try {
     program->evaluate({});
   } catch (const EvalError& e) {
-    if (!e.diagnostics.empty()) return {test::line_col(e.diagnostics.front()), e.diagnostics.front().hint};
+    if (!e.diagnostics.empty())
+      return {test::line_col(e.diagnostics.front(), program->sources()), e.diagnostics.front().hint};
     return {e.what(), ""};
   }
   return {"<no error>", ""};

@@ -38,7 +38,7 @@ TEST(StdlibModules, MissingModuleSaysWhereModulesLive) {
   } catch (const EvalError& e) {
     EXPECT_EQ(e.kind, ErrorKind::Input);
     ASSERT_FALSE(e.diagnostics.empty());
-    EXPECT_EQ(test::line_col(e.diagnostics[0]).substr(0, 4), "1:9:");
+    EXPECT_EQ(test::line_col(e.diagnostics[0], program->sources()).substr(0, 4), "1:9:");
     EXPECT_NE(e.diagnostics[0].hint.find("library modules live in"), std::string::npos)
         << e.diagnostics[0].hint;
   }
