@@ -42,8 +42,8 @@ inline ExprPtr box(Expr&& expr) { return std::make_unique<Expr>(std::move(expr))
 
 inline std::uint32_t height_of(const ExprPtr& e) { return e ? e->height : 0; }
 
-// Sets a new composite node's height from its children's and enforces kMaxExprHeight.
-inline Expr with_height(Expr&& e, const ParseState& s) {
+// The height of a node's tallest child: 0 for a leaf.
+inline std::uint32_t tallest_child(const Expr& e) {
   std::uint32_t below = 0;
   auto see = [&](const ExprPtr& child) { below = std::max(below, height_of(child)); };
   std::visit(
@@ -75,6 +75,12 @@ inline Expr with_height(Expr&& e, const ParseState& s) {
         }
       },
       e.node);
+  return below;
+}
+
+// Sets a new composite node's height from its children's and enforces kMaxExprHeight.
+inline Expr with_height(Expr&& e, const ParseState& s) {
+  const std::uint32_t below = tallest_child(e);
   e.height = below + 1;
   if (e.height > kMaxExprHeight) {
     throw SyntaxError{s.base + e.span.begin, "expression too deep: more than 256 nested operations",

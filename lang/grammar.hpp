@@ -46,7 +46,9 @@
 
 #include <algorithm>
 #include <string_view>
+#include <type_traits>
 
+#include "lang/plain_expression.hpp"
 #include "lang/plain_solid_item.hpp"
 
 namespace hlr::lang::grammar {
@@ -275,7 +277,45 @@ struct then_op : key_then {};
 struct then_rhs : seq< or_expr > {};
 struct then_expr : seq< or_expr, star< sp, then_op, sp, must< then_rhs > > > {};
 
-struct expression : seq< then_expr > {};
+// clang-format on
+
+// An expression read by hand (plain_expression.hpp) and pushed whole: the cascade above costs a rule
+// attempt per level for every operand, and general code is mostly expressions. The reader builds the
+// same nodes with the same spans, and leaves anything else (string interpolation, and every mistake,
+// so the grammar reports it) to then_expr; so to the grammar's analysis it is a then_expr. Only when the
+// parser builds nodes (the cascade's actions are on), with its state.
+struct plain_expression : then_expr {
+  template <apply_mode A, rewind_mode, template <typename...> class Action, template <typename...> class,
+            typename ParseInput, typename... States>
+  [[nodiscard]] static bool match(ParseInput& in, States&... states) {
+    if constexpr (A == apply_mode::action && !std::is_base_of_v<nothing<then_expr>, Action<then_expr>> &&
+                  sizeof...(States) == 1) {
+      return (read_into(in, states) && ...);
+    } else {
+      return false;
+    }
+  }
+
+ private:
+  template <typename ParseInput, typename State>
+  static bool read_into(ParseInput& in, State& state) {
+    if constexpr (requires { state.items; state.file; state.base; state.plain_expressions; }) {
+      if (!state.plain_expressions || !state.file) return false;
+      Expr expr;
+      const std::size_t length = lang::read_plain_expression(state.base, in.current(), in.end(), state.file->id(),
+                                                             state.prefix_depth + state.openers.size(), expr);
+      if (length == 0) return false;
+      in.bump(length);
+      state.items.emplace_back(std::move(expr));
+      return true;
+    } else {
+      return false;
+    }
+  }
+};
+
+// clang-format off
+struct expression : sor< plain_expression, then_expr > {};
 
 // ---- solid bodies -------------------------------------------------------------------------------
 

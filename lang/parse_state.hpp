@@ -103,6 +103,7 @@ struct ParseState {
   // (items hold no statements), and a block once begun is finished or the statement fails.
   SolidBody solid;
   bool plain_solid_items = true;  // ParseOptions::plain_solid_items
+  bool plain_expressions = true;  // ParseOptions::plain_expressions
 
   std::size_t offset(const char* p) const { return static_cast<std::size_t>(p - base); }
   // The same at SourcePos's width.

@@ -248,6 +248,7 @@ ParseResult parse(std::shared_ptr<const SourceFile> file, const ParseOptions& op
   std::size_t pos = skip_padding(text, 0);
   detail::ParseState state;
   state.plain_solid_items = options.plain_solid_items;
+  state.plain_expressions = options.plain_expressions;
   while (pos < text.size()) {
     detail::StatementParse parsed = detail::parse_statement(*file, pos, state);
     if (parsed.statement) {

@@ -34,6 +34,9 @@ struct ParseOptions {
   // Read plain solid items by hand (plain_solid_item.hpp). Off, the grammar reads every item: the tests
   // compare the two.
   bool plain_solid_items = true;
+  // Read expressions by hand where they allow it (plain_expression.hpp). Off, the grammar reads them all:
+  // the tests compare the two.
+  bool plain_expressions = true;
 };
 
 // `file_id` tells included files apart in spans; the runtime numbers the files it reads.

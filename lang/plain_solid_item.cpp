@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "lang/grammar.hpp"
+#include "lang/plain_scan.hpp"
 
 namespace hlr::lang {
 
@@ -18,35 +19,10 @@ namespace {
 
 namespace g = grammar;
 
-bool is_digit(char c) { return c >= '0' && c <= '9'; }
-bool is_first(char c) {
-  return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_';
-}  // identifier_first
-bool is_other(char c) { return is_first(c) || is_digit(c); }  // identifier_other
-
-// sp: blanks and `#` comments. A comment runs to the end of its line (until< eolf >): a lone '\r'
-// belongs to it, "\r\n" and "\n" end it, and the newline is a blank anyway.
-const char* skip_padding(const char* p, const char* end) {
-  while (p < end) {
-    const char c = *p;
-    if (c == ' ' || c == '\t' || c == '\r' || c == '\n' || c == '\f' || c == '\v') {
-      ++p;
-    } else if (c == '#') {
-      while (p < end && *p != '\n') ++p;
-    } else {
-      break;
-    }
-  }
-  return p;
-}
-
-// The whole identifier at p (identifier), or empty.
-std::string_view word_at(const char* p, const char* end) {
-  if (p >= end || !is_first(*p)) return {};
-  const char* q = p + 1;
-  while (q < end && is_other(*q)) ++q;
-  return {p, static_cast<std::size_t>(q - p)};
-}
+using scan::is_digit;
+using scan::is_other;
+using scan::skip_padding;
+using scan::word_at;
 
 bool is_keyword(std::string_view w) { return g::reserved::contains(w) || g::solid_words::contains(w); }
 
@@ -79,27 +55,9 @@ Read read_id(const char*& p, const char* end, std::string_view& key, std::array<
   return Read::Yes;
 }
 
-// literal_number, then the `must` checks after it (number_single_point, number_no_letter).
+// literal_number and the checks after it.
 bool read_number(const char*& p, const char* end, double& value) {
-  const char* q = p;
-  if (q < end && *q == '-') ++q;
-  if (q >= end || !is_digit(*q)) return false;
-  while (q < end && is_digit(*q)) ++q;
-  if (q + 1 < end && *q == '.' && is_digit(q[1])) {
-    q += 2;
-    while (q < end && is_digit(*q)) ++q;
-  }
-  if (q < end && (*q == 'e' || *q == 'E')) {
-    ++q;
-    if (q < end && (*q == '+' || *q == '-')) ++q;
-    if (q >= end || !is_digit(*q)) return false;  // the grammar's error (exponent_digits)
-    while (q < end && is_digit(*q)) ++q;
-  }
-  if (q < end && (is_other(*q) || (*q == '.' && q + 1 < end && is_digit(q[1])))) return false;
-  const auto result = std::from_chars(p, q, value);
-  if (result.ec != std::errc() || result.ptr != q) return false;  // out of range: the grammar's error
-  p = q;
-  return true;
+  return scan::read_number(p, end, value, /*signed_number=*/true);
 }
 
 const char* skip_blanks(const char* p, const char* end) {  // literal_blanks
