@@ -279,26 +279,31 @@ struct then_expr : seq< or_expr, star< sp, then_op, sp, must< then_rhs > > > {};
 
 // clang-format on
 
-// An expression read by hand (plain_expression.hpp) and pushed whole: the cascade above costs a rule
-// attempt per level for every operand, and general code is mostly expressions. The reader builds the
-// same nodes with the same spans, and leaves anything else (string interpolation, and every mistake,
-// so the grammar reports it) to then_expr; so to the grammar's analysis it is a then_expr. Only when the
-// parser builds nodes (the cascade's actions are on), with its state.
-struct plain_expression : then_expr {
+// A rule read by hand: `Read::into(in, state)` reads it and returns true, or declines (false) and leaves
+// the text to `Twin`, which reads it to the same nodes; so to the grammar's analysis it is a Twin. Only
+// when the parser builds nodes (the action of `Built`, a rule among Twin's, is on: not in the grammar
+// tests, not in lookaheads) and with the parser's one state.
+template <typename Twin, typename Built, typename Read>
+struct read_by_hand : Twin {
   template <apply_mode A, rewind_mode, template <typename...> class Action, template <typename...> class,
             typename ParseInput, typename... States>
   [[nodiscard]] static bool match(ParseInput& in, States&... states) {
-    if constexpr (A == apply_mode::action && !std::is_base_of_v<nothing<then_expr>, Action<then_expr>> &&
+    if constexpr (A == apply_mode::action && !std::is_base_of_v<nothing<Built>, Action<Built>> &&
                   sizeof...(States) == 1) {
-      return (read_into(in, states) && ...);
+      return (Read::into(in, states) && ...);
     } else {
       return false;
     }
   }
+};
 
- private:
+// An expression read by hand (plain_expression.hpp) and pushed whole: the cascade above costs a rule
+// attempt per level for every operand, and general code is mostly expressions. The reader builds the
+// same nodes with the same spans, and leaves anything else (string interpolation, and every mistake,
+// so the grammar reports it) to then_expr.
+struct expression_reader {
   template <typename ParseInput, typename State>
-  static bool read_into(ParseInput& in, State& state) {
+  static bool into(ParseInput& in, State& state) {
     if constexpr (requires { state.items; state.file; state.base; state.plain_expressions; }) {
       if (!state.plain_expressions || !state.file) return false;
       Expr expr;
@@ -313,6 +318,7 @@ struct plain_expression : then_expr {
     }
   }
 };
+struct plain_expression : read_by_hand< then_expr, then_expr, expression_reader > {};
 
 // clang-format off
 struct expression : sor< plain_expression, then_expr > {};
@@ -360,22 +366,10 @@ struct solid_words : any_word< key_vertex, key_face, key_hole, key_line > {};
 // without holes, `line ID ID` — read by hand (plain_solid_item.hpp) straight into the block being parsed:
 // generated scripts are mostly this, and at a rule attempt per character the grammar reads them at a
 // quarter of the speed. Anything else, errors included, it leaves to solid_item, which reads the same
-// text to the same items; so to the grammar's analysis it is a solid_item. Without the parser's state
-// (the grammar tests) it matches nothing.
-struct plain_solid_item : solid_item {
-  template <apply_mode, rewind_mode, template <typename...> class, template <typename...> class,
-            typename ParseInput, typename... States>
-  [[nodiscard]] static bool match(ParseInput& in, States&... states) {
-    if constexpr (sizeof...(States) == 1) {
-      return (read_into(in, states) && ...);
-    } else {
-      return false;
-    }
-  }
-
- private:
+// text to the same items.
+struct solid_item_reader {
   template <typename ParseInput, typename State>
-  static bool read_into(ParseInput& in, State& state) {
+  static bool into(ParseInput& in, State& state) {
     if constexpr (requires { state.solid.file(); state.base; state.plain_solid_items; }) {
       if (!state.plain_solid_items) return false;
       const std::size_t length = lang::read_plain_solid_item(state.base, in.current(), in.end(), state.solid);
@@ -386,6 +380,7 @@ struct plain_solid_item : solid_item {
     }
   }
 };
+struct plain_solid_item : read_by_hand< solid_item, vertex_decl, solid_item_reader > {};
 
 // clang-format off
 struct solid_name : name {};
