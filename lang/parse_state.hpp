@@ -106,7 +106,7 @@ struct ParseState {
   bool plain_expressions = true;  // ParseOptions::plain_expressions
 
   std::size_t offset(const char* p) const { return static_cast<std::size_t>(p - base); }
-  // The same at SourcePos's width.
+  // The same at a span's width.
   std::uint32_t offset32(const char* p) const { return static_cast<std::uint32_t>(p - base); }
   SourceSpan span(const char* begin, const char* end) const { return file->span(offset(begin), offset(end)); }
 };

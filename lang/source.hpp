@@ -40,8 +40,11 @@ class SourceFile {
 
   // Position of a byte offset (clamped to the text's size).
   SourcePos position(std::size_t offset) const;
+  // The span [begin, end), clamped to the text (and `end` to no less than `begin`).
   SourceSpan span(std::size_t begin, std::size_t end) const {
-    return {id_, static_cast<std::uint32_t>(begin), static_cast<std::uint32_t>(std::max(begin, end))};
+    begin = std::min(begin, text_.size());
+    return {id_, static_cast<std::uint32_t>(begin),
+            static_cast<std::uint32_t>(std::clamp(end, begin, text_.size()))};
   }
   // Line `line` (1-based) without its line terminator; empty when out of range.
   std::string_view line_text(std::uint32_t line) const;
