@@ -240,9 +240,21 @@ ParseResult parse(std::shared_ptr<const SourceFile> file, const ParseOptions& op
   result.source = file;
   const std::string_view text = file->text();
 
+  if (text.size() > options.max_bytes) {
+    result.diagnostics.push_back(
+        {Severity::Error,
+         file->span(0, 0),
+         "script is too large: " + std::to_string(text.size()) + " bytes, and a script holds at most " +
+             std::to_string(options.max_bytes) + " bytes",
+         "split it into smaller files joined with `include \"FILE\"`, or import the mesh from an OFF, OBJ or "
+         "STL file with `import(\"FILE\")`",
+         {}});
+    return result;
+  }
+
   Script script;
   script.file = file->id();
-  // A statement is 224 bytes and a generated script has 10⁵ of them: growing by doubling moved each one
+  // A statement is 176 bytes and a generated script has 10⁵ of them: growing by doubling moved each one
   // twice and held half again the memory at the last step. Most start a line with their keyword.
   script.statements.reserve(file->lines_starting_with_letter());
   std::size_t pos = skip_padding(text, 0);

@@ -37,6 +37,9 @@ struct ParseOptions {
   // Read expressions by hand where they allow it (plain_expression.hpp). Off, the grammar reads them all:
   // the tests compare the two.
   bool plain_expressions = true;
+  // The largest script read, in bytes: spans hold 32-bit offsets (source.hpp). A larger script is
+  // refused with a message rather than given wrong positions. Tests lower it.
+  std::size_t max_bytes = kMaxSourceBytes;
 };
 
 // `file_id` tells included files apart in spans; the runtime numbers the files it reads.

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <algorithm>
+#include <cstddef>
 #include <cstdint>
 #include <string>
 #include <string_view>
@@ -21,6 +22,9 @@ struct SourcePos {
   std::uint32_t offset = 0;  // byte offset into the file's text
   friend bool operator==(const SourcePos&, const SourcePos&) = default;
 };
+
+// The largest script text a span can address: offsets are 32-bit.
+inline constexpr std::size_t kMaxSourceBytes = 0xFFFF'FFFFU;
 
 // [begin, end): byte offsets; end is one past the last character of the construct.
 struct SourceSpan {

@@ -187,6 +187,92 @@ TEST(Diagnostics, CaretCountsCodePoints) {
   EXPECT_NE(text.find("     |                 ^\n"), std::string::npos) << text;
 }
 
+// The code points of `text` (UTF-8), one string each.
+std::vector<std::string> code_points(const std::string& text) {
+  std::vector<std::string> out;
+  for (const char c : text) {
+    if ((static_cast<unsigned char>(c) & 0xC0U) == 0x80U && !out.empty()) {
+      out.back() += c;
+    } else {
+      out.emplace_back(1, c);
+    }
+  }
+  return out;
+}
+
+// The printed quote and the code point its caret stands under, for a one-line script with one error.
+struct Quote {
+  std::string quoted;  // the quoted line, gutter removed
+  std::string under_caret;
+  std::size_t underline = 0;  // '~' after the caret
+};
+Quote quote_of(const std::string& text) {
+  const ParseResult result = parse(text, "long.hls");
+  EXPECT_EQ(result.diagnostics.size(), 1U);
+  if (result.diagnostics.empty()) return {};
+  const std::string printed = format(result.diagnostics[0], *result.source);
+  const std::size_t first = printed.find('\n');
+  const std::size_t second = printed.find('\n', first + 1);
+  const std::size_t third = printed.find('\n', second + 1);
+  const std::string gutter = "   1 | ";
+  Quote q;
+  q.quoted = printed.substr(first + 1 + gutter.size(), second - first - 1 - gutter.size());
+  const auto caret_line =
+      code_points(printed.substr(second + 1 + gutter.size(), third - second - 1 - gutter.size()));
+  const auto quoted = code_points(q.quoted);
+  for (std::size_t i = 0; i < caret_line.size(); ++i) {
+    if (caret_line[i] != "^") continue;
+    q.under_caret = i < quoted.size() ? quoted[i] : "<end>";
+    q.underline = caret_line.size() - i - 1;
+  }
+  return q;
+}
+
+TEST(Diagnostics, LongLineIsQuotedAroundTheCaret) {
+  std::string list = "let x = [";
+  for (int i = 0; i < 3000; ++i) list += "1, ";
+  Quote q = quote_of(list + "@, " + list.substr(9) + "1]\n");
+  EXPECT_EQ(q.under_caret, "@");
+  EXPECT_EQ(code_points(q.quoted).size(), 162U);
+  EXPECT_EQ(q.quoted.substr(0, 3), "\u2026");                 // cut before
+  EXPECT_EQ(q.quoted.substr(q.quoted.size() - 3), "\u2026");  // and after
+  // The end of the line is quoted whole, cut before.
+  q = quote_of(list + "@]\n");
+  EXPECT_EQ(q.under_caret, "@");
+  EXPECT_EQ(q.quoted.substr(0, 3), "\u2026");
+  EXPECT_EQ(q.quoted.substr(q.quoted.size() - 3), " @]");
+  EXPECT_EQ(code_points(q.quoted).size(), 161U);
+  // The start of the line is quoted whole, cut after.
+  q = quote_of("let x = [@, " + list.substr(9) + "]\n");
+  EXPECT_EQ(q.under_caret, "@");
+  EXPECT_EQ(q.quoted.substr(0, 10), "let x = [@");
+  EXPECT_EQ(code_points(q.quoted).size(), 161U);
+  // Multi-byte characters count one column each, cut or not.
+  q = quote_of("let s = \"" + [] {
+    std::string e;
+    for (int i = 0; i < 500; ++i) e += "\u00e9";
+    return e;
+  }() + "\" @\n");
+  EXPECT_EQ(q.under_caret, "@");
+  EXPECT_LE(code_points(q.quoted).size(), 162U);
+  // Tabs and the underline as on a short line.
+  q = quote_of("\tlet for = 1" + std::string(400, ' ') + "\n");
+  EXPECT_EQ(q.under_caret, "f");
+  EXPECT_EQ(q.underline, 2U);
+}
+
+TEST(Diagnostics, ScriptTooLargeIsRefused) {
+  ParseOptions options;
+  options.max_bytes = 16;
+  const ParseResult result = parse("let x = 1\nlet y = 2\n", "big.hls", 0, options);
+  ASSERT_EQ(result.diagnostics.size(), 1U);
+  EXPECT_FALSE(result.ok());
+  EXPECT_EQ(result.diagnostics[0].message,
+            "script is too large: 20 bytes, and a script holds at most 16 bytes");
+  EXPECT_EQ(result.source->position(result.diagnostics[0].span.begin).line, 1U);
+  EXPECT_TRUE(parse("let x = 1\n", "small.hls", 0, options).ok());
+}
+
 TEST(Diagnostics, UnclosedBraceSaysWhereItOpened) {
   const ParseResult result = parse("let a = 1\nfor i in 0..3 {\n  draw x\n", "u.hls");
   ASSERT_EQ(result.diagnostics.size(), 1U);
