@@ -1,6 +1,7 @@
 #include "runtime/eval_detail.hpp"
 
 #include <algorithm>
+#include <cctype>
 
 namespace hlr::runtime {
 
@@ -23,15 +24,20 @@ std::size_t edit_distance(const std::string& a, const std::string& b) {
   return row[b.size()];
 }
 
+bool same_letter(char a, char b) {
+  return std::tolower(static_cast<unsigned char>(a)) == std::tolower(static_cast<unsigned char>(b));
+}
+
 }  // namespace
 
 std::string did_you_mean(const std::string& name, const std::vector<std::string>& candidates) {
-  const std::size_t allowed = name.size() <= 3 ? 1 : 2;
+  // One letter changed in a one-letter name is another name, not a typo (`y` is not `t`); only its case is.
+  const std::size_t allowed = name.size() <= 1 ? 0 : name.size() <= 3 ? 1 : 2;
   std::string best;
   std::size_t best_distance = allowed + 1;
   for (const std::string& c : candidates) {
     if (c == name || (c.size() > name.size() + allowed) || (name.size() > c.size() + allowed)) continue;
-    const std::size_t d = edit_distance(name, c);
+    const std::size_t d = name.size() == 1 ? (same_letter(name[0], c[0]) ? 0 : 1) : edit_distance(name, c);
     if (d < best_distance || (d == best_distance && c < best)) {
       best_distance = d;
       best = c;

@@ -110,6 +110,16 @@ TEST(Resolver, EachUnknownNameOnceWithAHint) {
   EXPECT_EQ(errors[1].hint, "did you mean 'cylinder'?");
 }
 
+TEST(Resolver, OneLetterNamesAreHintedOnlyByCase) {
+  // Every one-letter name is one edit from `t`: that is no hint. `X` for `x` is.
+  auto program = Program::from_text("test.hls", "draw y\n");
+  ASSERT_EQ(program->static_errors().size(), 1U);
+  EXPECT_EQ(program->static_errors()[0].hint, "define it first with 'let y = ...' or 'def y(...)'");
+  program = Program::from_text("test.hls", "let x = 1\ndraw X\n");
+  ASSERT_EQ(program->static_errors().size(), 1U);
+  EXPECT_EQ(program->static_errors()[0].hint, "did you mean 'x'?");
+}
+
 TEST(Resolver, IncludedFilesAreChecked) {
   const TempDir dir("resolver-include");
   dir.write("parts.hls", "def post(h) = box(1, 1, h)\nif false { draw bolt }\n");
