@@ -106,6 +106,8 @@ struct Tolerance {
   static constexpr double kPaperMatchMm = 0.5;
   // G-code: a page this many mm larger than the work area still fits (a page exactly the area's size).
   static constexpr double kWorkAreaSlackMm = 1e-6;
+  // G-code: a point printed (3 decimals) on the work area's edge is on it, up to half the last digit.
+  static constexpr double kPrintedReachMm = 0.0005;
   // Plotter SVG: points this far off the page, relative to its width + height, are on its edge (rounding
   // in the layout); they are cut at the exact edge.
   static constexpr double kPageEdgeRelative = 1e-6;

@@ -157,7 +157,7 @@ Point2 printed(Point2 m) { return {std::stod(fixed3(m.x)), std::stod(fixed3(m.y)
 std::string to_gcode(const PlotPage& page, const GcodeProfile& profile, const GcodeOptions& options) {
   const Placement pl = place(profile, page.width_mm, page.height_mm);
   const Rect2 box{0, 0, pl.page_w, pl.page_h};  // machine mm: the page
-  constexpr double kReachSlack = 0.0005;        // what prints as a point on the edge is on it
+  constexpr double kReachSlack = Tolerance::kPrintedReachMm;
 
   Program body(profile);
   body.pen_up();
