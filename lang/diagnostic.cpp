@@ -31,21 +31,11 @@ constexpr std::size_t kQuotedColumns = 160;
 constexpr std::size_t kColumnsBeforeCaret = 60;
 constexpr std::string_view kEllipsis = "\u2026";
 
-// Byte offset of code point `column` (1-based) of `line`; line.size() past its end.
-std::size_t byte_at_column(std::string_view line, std::size_t column) {
-  std::size_t seen = 0;
-  for (std::size_t i = 0; i < line.size(); ++i) {
-    if ((static_cast<unsigned char>(line[i]) & 0xC0U) == 0x80U) continue;
-    if (++seen == column) return i;
-  }
-  return line.size();
-}
-
 // The quoted source line and a caret line under `span`, gutter included.
 std::string excerpt(const SourceFile& file, const SourceSpan& span) {
   const SourcePos begin = file.position(span.begin);
   const SourcePos end = file.position(span.end);
-  std::string_view line = file.line_text(begin.line);
+  const std::string_view line = file.line_text(begin.line);
   const std::size_t columns = count_code_points(line);
   // Columns of the line the caret and its underline cover: [begin.column, stop).
   std::size_t stop = begin.column + 1;
@@ -54,9 +44,8 @@ std::string excerpt(const SourceFile& file, const SourceSpan& span) {
   } else if (end.line > begin.line) {
     stop = std::max<std::size_t>(columns + 1, begin.column + 1);
   }
-  std::size_t caret = begin.column;  // in the quoted text
-  std::string_view before;
-  std::string_view after;
+  std::string quoted(line);
+  std::size_t caret = begin.column;  // in `quoted`
   if (columns > kQuotedColumns) {
     const std::size_t first =
         std::min(begin.column > kColumnsBeforeCaret ? begin.column - kColumnsBeforeCaret : 1,
@@ -64,27 +53,20 @@ std::string excerpt(const SourceFile& file, const SourceSpan& span) {
     const std::size_t last = first + kQuotedColumns - 1;
     const std::size_t from = byte_at_column(line, first);
     const std::size_t to = byte_at_column(line, last + 1);
-    if (first > 1) before = kEllipsis;
-    if (to < line.size()) after = kEllipsis;
-    line = line.substr(from, to - from);
-    caret = begin.column - first + 1 + (before.empty() ? 0 : 1);
+    quoted = std::string(first > 1 ? kEllipsis : "") + std::string(line.substr(from, to - from)) +
+             std::string(to < line.size() ? kEllipsis : "");
+    caret = begin.column - first + 1 + (first > 1 ? 1 : 0);
     stop = std::max<std::size_t>(std::min(stop, last + 1), begin.column + 1);
   }
   const std::string number = std::to_string(begin.line);
   const std::string gutter(std::max<std::size_t>(number.size(), 4), ' ');
-  std::string out = std::string(gutter.size() - number.size(), ' ') + number + " | " + std::string(before) +
-                    std::string(line) + std::string(after) + "\n";
+  std::string out = std::string(gutter.size() - number.size(), ' ') + number + " | " + quoted + "\n";
   out += gutter + " | ";
   // Blank out what precedes the caret, keeping tabs so the caret lines up; one space per code point.
   std::size_t column = 1;
-  if (!before.empty()) {
-    out += ' ';
-    ++column;
-  }
-  for (std::size_t i = 0; i < line.size() && column < caret; ++i) {
-    const auto byte = static_cast<unsigned char>(line[i]);
-    if ((byte & 0xC0U) == 0x80U) continue;
-    out += line[i] == '\t' ? '\t' : ' ';
+  for (std::size_t i = 0; i < quoted.size() && column < caret; ++i) {
+    if (is_continuation_byte(quoted[i])) continue;
+    out += quoted[i] == '\t' ? '\t' : ' ';
     ++column;
   }
   while (column < caret) {  // caret past the end of the line

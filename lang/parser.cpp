@@ -66,7 +66,7 @@ std::size_t token_length(std::string_view text, std::size_t pos) {
   if (pos >= text.size()) return 0;
   if (is_word_char(text[pos])) return word_at(text, pos).size();
   std::size_t end = pos + 1;
-  while (end < text.size() && (static_cast<unsigned char>(text[end]) & 0xC0U) == 0x80U) ++end;
+  while (end < text.size() && is_continuation_byte(text[end])) ++end;
   return end - pos;
 }
 

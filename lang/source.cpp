@@ -38,9 +38,17 @@ std::size_t SourceFile::lines_starting_with_letter() const {
 std::size_t count_code_points(std::string_view text) {
   std::size_t n = 0;
   for (const char c : text) {
-    if ((static_cast<unsigned char>(c) & 0xC0U) != 0x80U) ++n;
+    if (!is_continuation_byte(c)) ++n;
   }
   return n;
+}
+
+std::size_t byte_at_column(std::string_view text, std::size_t column) {
+  std::size_t seen = 0;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    if (!is_continuation_byte(text[i]) && ++seen == column) return i;
+  }
+  return text.size();
 }
 
 SourcePos SourceFile::position(std::size_t offset) const {

@@ -66,5 +66,9 @@ class SourceFile {
 
 // Number of code points in a UTF-8 string (continuation bytes are not counted; invalid bytes count one).
 std::size_t count_code_points(std::string_view text);
+// A byte that continues a UTF-8 code point (not its first byte).
+inline bool is_continuation_byte(char c) { return (static_cast<unsigned char>(c) & 0xC0U) == 0x80U; }
+// Byte offset of the code point numbered `column` (1-based) in `text`; text.size() past its end.
+std::size_t byte_at_column(std::string_view text, std::size_t column);
 
 }  // namespace hlr::lang
