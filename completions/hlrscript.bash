@@ -36,6 +36,7 @@ _hlrscript() {
       COMPREPLY=($(compgen -W "$("$program" --list-plotters 2>/dev/null)" -- "$cur")); return ;;
     --hidden) COMPREPLY=($(compgen -W "off dashed" -- "$cur")); return ;;
     --svg) COMPREPLY=($(compgen -W "plotter document" -- "$cur")); return ;;
+    --fit) COMPREPLY=($(compgen -W "camera drawing" -- "$cur")); return ;;
     --text) COMPREPLY=($(compgen -W "stroke outline" -- "$cur")); return ;;
     --hpgl-moves) COMPREPLY=($(compgen -W "relative absolute" -- "$cur")); return ;;
     --pen-order) COMPREPLY=($(compgen -W "none greedy optimized" -- "$cur")); return ;;

@@ -57,8 +57,10 @@ po::options_description visible_options() {
       ("portrait", "portrait paper")                                                                  //
       ("margin", po::value<std::string>()->value_name("MM"), "margin on every side (default 12 mm)")  //
       ("scale", po::value<std::string>()->value_name("MM"),
-       "1 picture unit = MM millimetres, centred, instead of fitting the page")           //
-      ("dpi", po::value<std::string>()->value_name("N"), "PNG resolution (default 150)")  //
+       "1 picture unit = MM millimetres, centred, instead of the camera's field of view")  //
+      ("fit", po::value<std::string>()->value_name("camera|drawing"),
+       "what fills the page: the camera's view (default; the same scale in every frame) or what is drawn")  //
+      ("dpi", po::value<std::string>()->value_name("N"), "PNG resolution (default 150)")                    //
       ("line-width", po::value<std::string>()->value_name("MM"),
        "pen width on PDF/SVG/PNG (default 0.25)")  //
       ("plotter", po::value<std::string>()->value_name("NAME"),
@@ -194,6 +196,9 @@ bool parse_device_options(const po::variables_map& vm, DeviceOptions& d, std::st
       !either_option(vm, "svg", "plotter", "document", d.plotter_svg, error) ||
       !either_option(vm, "hpgl-moves", "relative", "absolute", d.relative, error))
     return false;
+  std::optional<bool> fit_camera;
+  if (!either_option(vm, "fit", "camera", "drawing", fit_camera, error)) return false;
+  if (fit_camera) d.fit = *fit_camera ? PageFit::Camera : PageFit::Drawing;
   if (vm.count("json")) {
     const std::string v = vm["json"].as<std::string>();
     const std::optional<JsonParts> parts = parse_json_parts(v);
@@ -296,6 +301,7 @@ std::string usage_text() {
        "A-B]\n"
        "                          [--shard K/N] [--jobs N] [--hidden off|dashed] [--stats]\n"
        "                          [--paper SIZE] [--portrait] [--margin MM] [--scale MM] [--dpi N]\n"
+       "                          [--fit camera|drawing]\n"
        "                          [--plotter NAME] [--clip] [--pen-order none|greedy|optimized]\n"
        "       hlrscript check FILE.hls [--camera NAME] [--frames A-B] [--shard K/N]\n"
        "       hlrscript watch FILE.hls [-o OUT] [options]   # render again whenever an input changes\n"

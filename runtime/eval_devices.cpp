@@ -127,9 +127,10 @@ bool equal_ignoring_case(std::string_view a, std::string_view b) {
 // ---- paper ------------------------------------------------------------------------------------------
 
 std::string paper_hint() {
-  return "the paper options are margin: millimetres from 0, leaving room on the page, and scale: "
-         "millimetres per drawing unit above 0 (instead of fitting the drawing to the page); 'paper custom' "
-         "also takes width: and height: in millimetres, up to " +
+  return "the paper options are margin: millimetres from 0, leaving room on the page, scale: "
+         "millimetres per drawing unit above 0 (instead of the camera's field of view), and fit: \"camera\" "
+         "(the default: the camera's view fills the page) or \"drawing\" (what is drawn fills it); 'paper "
+         "custom' also takes width: and height: in millimetres, up to " +
          format_for_message(kMaxPaperSideMm);
 }
 
@@ -301,6 +302,7 @@ void Evaluator::set_paper(const lang::PaperSpec& paper, const lang::Stmt& stmt, 
                         paper_hint(),
                         {{"margin", ValueKind::Number},
                          {"scale", ValueKind::Number},
+                         {"fit", ValueKind::String},
                          {"width", ValueKind::Number},
                          {"height", ValueKind::Number}}};
   const GivenOptions given =
@@ -346,6 +348,16 @@ void Evaluator::set_paper(const lang::PaperSpec& paper, const lang::Stmt& stmt, 
   if (const GivenOption* scale = find(given, "scale"))
     setting.mm_per_unit = number_in(
         *scale, list, [](double x) { return x > 0; }, "above 0 millimetres per unit");
+  if (const GivenOption* fit = find(given, "fit")) {
+    const std::optional<PageFit> chosen = page_fit_by_name(fit->value.as_string());
+    if (!chosen)
+      fail(
+          fit->span,
+          list.who + "option 'fit' must be \"camera\" or \"drawing\", got \"" + fit->value.as_string() + "\"",
+          "\"camera\" frames the page by the camera's field of view (the same scale in every frame); "
+          "\"drawing\" fits whatever is drawn to the page");
+    setting.fit = chosen;
+  }
   out_.paper = std::move(setting);
 }
 

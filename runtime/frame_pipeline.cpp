@@ -84,7 +84,7 @@ void run_frame(const Program& program, int frame, double fps, const PipelineOpti
   job.device = settings.device;
   settings.plot.texts = page_labels(scene.labels);
 
-  const Camera& camera = settings.camera->camera;
+  const Camera& camera = settings.camera_on_page;
   const auto render = [&](const Scene& drawn, FrameResult& result) {
     try {
       result = render_frame(drawn, camera, hlr);
@@ -97,8 +97,9 @@ void run_frame(const Program& program, int frame, double fps, const PipelineOpti
   if (!has_world_labels(scene.labels)) {
     render(scene.scene, result);
   } else {
-    // Labels are sized on the page, so the layout comes first: the camera's frame, or (without one) the
-    // solids' own pieces, found by a first run; the labels then go through the engine with the solids.
+    // Labels are sized on the page, so the layout comes first: the camera's frame, or (fitting the
+    // drawing) the solids' own pieces, found by a first run; the labels then go through the engine with
+    // the solids.
     std::optional<Rect2> extent = camera.frame;
     if (!extent) {
       render(scene.scene, result);
@@ -127,11 +128,11 @@ void run_frame(const Program& program, int frame, double fps, const PipelineOpti
   DeviceFrame frame_out;
   frame_out.frame = scene.time.frame;
   frame_out.time = scene.time.time;
-  frame_out.camera = &settings.camera->camera;
+  frame_out.camera = &settings.camera_on_page;
   frame_out.segments = &result.segments;
   frame_out.object_names = &r.object_names;
   frame_out.include_hidden = settings.hidden;
-  frame_out.plot = plot_page(result.segments, settings.camera->camera.frame, settings.caption, settings.plot);
+  frame_out.plot = plot_page(result.segments, camera.frame, settings.caption, settings.plot);
   if (Clock::now() > scene.deadline) out_of_time("the pen plan");
   r.plan = frame_out.plot.stats;
   r.visible_segments = frame_out.plot.visible_segments;

@@ -46,6 +46,7 @@ struct PaperSetting {  // paper A4 landscape [(margin: MM, scale: MM_PER_UNIT)],
   Paper paper;
   std::optional<double> margin_mm;
   std::optional<double> mm_per_unit;  // explicit scale instead of fit-to-page
+  std::optional<PageFit> fit;         // fit: "camera" | "drawing"
   lang::SourceSpan span;
 };
 
@@ -70,7 +71,7 @@ inline constexpr double kDefaultLabelSizeMm = 3.5;  // capitals' height
 inline constexpr double kMaxLabelSizeMm = 500;
 struct LabelSetting {
   std::string text;
-  Point3 at;             // world, or page mm (x, y) when on_page
+  Point3 at;  // world, or page mm (x, y) when on_page
   bool on_page = false;
   double size_mm = kDefaultLabelSizeMm;
   int pen = 1;

@@ -56,6 +56,7 @@ struct DeviceOptions {
   std::optional<bool> landscape;             // --landscape / --portrait
   std::optional<double> margin_mm;           // --margin
   std::optional<double> mm_per_unit;         // --scale: 1 picture unit = N mm instead of fit-to-page
+  std::optional<PageFit> fit;                // --fit camera|drawing: what sets the page scale
   double dpi = 150;                          // --dpi (PNG)
   bool decorations = true;                   // --plain: no frame border or caption
   double step_mm = 0.1;                      // --step: the incremental plotter's step (.steps)

@@ -29,31 +29,6 @@ std::string caption_for(const FrameScene& scene, const NamedCamera& camera, cons
   return buf;
 }
 
-// The page: the frame's paper setting, with the command line's paper, orientation, margin and scale
-// taking precedence.
-PageSpec page_spec_for(const FrameScene& scene, const DeviceOptions& d) {
-  PageSpec spec;
-  if (scene.paper) {
-    spec.paper = scene.paper->paper;
-    if (scene.paper->margin_mm) spec.margin_mm = *scene.paper->margin_mm;
-    spec.mm_per_unit = scene.paper->mm_per_unit;
-  }
-  if (d.paper) {
-    const bool landscape = d.landscape.value_or(true);
-    const std::optional<Paper> paper = parse_paper(*d.paper, landscape);
-    if (!paper)  // the CLI checked the spelling; this is a safety net
-      throw RunError("--paper " + *d.paper + ": unknown paper size",
-                     "use A0-A6, Letter, Legal, Tabloid or WxH in mm", 64);
-    spec.paper = *paper;
-  } else if (d.landscape) {
-    const bool is_landscape = spec.paper.width_mm >= spec.paper.height_mm;
-    if (is_landscape != *d.landscape) std::swap(spec.paper.width_mm, spec.paper.height_mm);
-  }
-  if (d.margin_mm) spec.margin_mm = *d.margin_mm;
-  if (d.mm_per_unit) spec.mm_per_unit = d.mm_per_unit;
-  return spec;
-}
-
 // ---- G-code plotters (and the check that an output gets a plotter of its own kind) ----------------------
 
 // A plotter named for an output of the other kind (an HPGL profile for a .gcode file, or the reverse):
@@ -214,6 +189,31 @@ std::shared_ptr<const Device> device_for(DeviceKind kind, const FrameScene& scen
 
 }  // namespace
 
+PageSpec page_spec_for(const FrameScene& scene, const DeviceOptions& d) {
+  PageSpec spec;
+  if (scene.paper) {
+    spec.paper = scene.paper->paper;
+    if (scene.paper->margin_mm) spec.margin_mm = *scene.paper->margin_mm;
+    spec.mm_per_unit = scene.paper->mm_per_unit;
+    if (scene.paper->fit) spec.fit = *scene.paper->fit;
+  }
+  if (d.paper) {
+    const bool landscape = d.landscape.value_or(true);
+    const std::optional<Paper> paper = parse_paper(*d.paper, landscape);
+    if (!paper)  // the CLI checked the spelling; this is a safety net
+      throw RunError("--paper " + *d.paper + ": unknown paper size",
+                     "use A0-A6, Letter, Legal, Tabloid or WxH in mm", 64);
+    spec.paper = *paper;
+  } else if (d.landscape) {
+    const bool is_landscape = spec.paper.width_mm >= spec.paper.height_mm;
+    if (is_landscape != *d.landscape) std::swap(spec.paper.width_mm, spec.paper.height_mm);
+  }
+  if (d.margin_mm) spec.margin_mm = *d.margin_mm;
+  if (d.mm_per_unit) spec.mm_per_unit = d.mm_per_unit;
+  if (d.fit) spec.fit = *d.fit;
+  return spec;
+}
+
 const NamedCamera& choose_camera(const FrameScene& scene, const std::optional<std::string>& wanted,
                                  const std::string& script_name) {
   if (scene.cameras.empty()) {
@@ -258,6 +258,7 @@ void resolve_device(const FrameScene& scene, const RunSettings& run, FrameSettin
     plot.spec.margin_mm = planning.min_margin_mm + kCaptionBandMm;
     check_page_spec(plot.spec);
   }
+  s.camera_on_page = framed_camera(s.camera->camera, plot.spec);
   plot.plan.order = run.device.pen_order;
   plot.plan.time_budget_ms = run.device.plan_budget_ms;
   plot.plan.grid_mm = planning.grid_mm;

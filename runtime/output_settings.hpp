@@ -27,12 +27,19 @@ struct RunSettings {
 
 struct FrameSettings {
   const NamedCamera* camera = nullptr;  // into the frame's scene
-  bool hidden = false;                  // hidden pieces are computed, planned and drawn
+  // The camera with its picture frame on this page (core/device/page_layout.hpp framed_camera): what the
+  // engine clips to and the devices lay out. Set by resolve_device().
+  Camera camera_on_page;
+  bool hidden = false;  // hidden pieces are computed, planned and drawn
   OutputTarget target;
   std::shared_ptr<const Device> device;
   PagePlotOptions plot;  // page (margin widened to the device's reach), pens by object, plan settings
   std::string caption;
 };
+
+// The page: the frame's paper setting, with the command line's paper, orientation, margin, scale and fit
+// taking precedence.
+PageSpec page_spec_for(const FrameScene& scene, const DeviceOptions& d);
 
 // The camera a frame is drawn with: `wanted` if given, else the last declared. Throws RunError.
 const NamedCamera& choose_camera(const FrameScene& scene, const std::optional<std::string>& wanted,

@@ -274,12 +274,13 @@ std::optional<ReplSession::View> ReplSession::view(std::string& message) const {
     }
     const NamedCamera& c = choose_camera(v.scene, drawn_camera(), "the session");
     v.camera = c.name;
-    v.view_camera = c.camera;
+    // Framed as `:render` frames it on the session's paper, so the terminal shows what the file will.
+    v.view_camera = framed_camera(c.camera, page_spec_for(v.scene, DeviceOptions{}));
     HlrOptions o;
     o.include_hidden = hidden_.value_or(v.scene.hidden.value_or(false));
     o.cancel = &interrupt_requested();
     const auto start = std::chrono::steady_clock::now();
-    v.result = render_frame(v.scene.scene, c.camera, o);
+    v.result = render_frame(v.scene.scene, v.view_camera, o);
     v.render_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     return v;
   } catch (const EvalError& e) {
@@ -321,6 +322,7 @@ ReplReply ReplSession::stats() {
     edges += o.solid->edges.size();
   }
   PagePlotOptions plot;
+  plot.spec = page_spec_for(v->scene, DeviceOptions{});
   plot.include_hidden = hidden_.value_or(v->scene.hidden.value_or(false));
   const PagePlot page = plot_page(v->result.segments, v->view_camera.frame, "", plot);
   const PlanStats& s = page.stats;

@@ -27,7 +27,11 @@ struct Camera {
   Vector2 offset{};       // added after projection
   // Perspective near plane, in view depth units (> 0).
   double near_depth = Tolerance::kDefaultNearDepth;
-  std::optional<Rect2> frame;  // picture frame: drawn pieces are clipped to it (Desens' WINDOW)
+  std::optional<Rect2> frame;  // picture frame: drawn pieces are clipped to it (Desens' WINDOW, aspect:)
+  // Without a frame of its own the camera frames the page it is drawn on (core/device/page_layout.hpp,
+  // picture_frame): the picture spans ±window_half along the drawing area's shorter side. 1 for lookat
+  // (the fov) and ortho (the height); 90 for orbit (Albers' drawing window, 180 rows of the CGA screen).
+  double window_half = 1;
 
   // World-space eye position (perspective) and unit viewing direction (both projections).
   Point3 eye_world() const;

@@ -27,6 +27,8 @@ Camera orbit_camera(const OrbitParameters& p) {
   c.offset = {};
   c.near_depth = Tolerance::kOrbitNearFraction * p.rho;
   c.frame.reset();
+  // Albers' pictures are in screen units; his drawing window is rows 20–199 of the 320 × 200 CGA screen.
+  c.window_half = 90;
   return c;
 }
 

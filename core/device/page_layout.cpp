@@ -99,6 +99,39 @@ const std::vector<std::string_view>& paper_names() {
   return names;
 }
 
+std::optional<PageFit> page_fit_by_name(std::string_view name) {
+  if (name == "camera") return PageFit::Camera;
+  if (name == "drawing") return PageFit::Drawing;
+  return std::nullopt;
+}
+
+Rect2 camera_window(double half_extent, const PageSpec& spec) {
+  check_page_spec(spec);
+  const double room_w = spec.paper.width_mm - 2 * spec.margin_mm;
+  const double room_h = spec.paper.height_mm - 2 * spec.margin_mm;
+  double half_w = 0, half_h = 0;
+  if (spec.mm_per_unit) {
+    half_w = 0.5 * room_w / *spec.mm_per_unit;
+    half_h = 0.5 * room_h / *spec.mm_per_unit;
+  } else {
+    const double shorter = std::min(room_w, room_h);
+    half_w = half_extent * room_w / shorter;
+    half_h = half_extent * room_h / shorter;
+  }
+  return Rect2{-half_w, -half_h, half_w, half_h};
+}
+
+std::optional<Rect2> picture_frame(const Camera& camera, const PageSpec& spec) {
+  if (camera.frame) return camera.frame;
+  if (spec.fit == PageFit::Drawing) return std::nullopt;
+  return camera_window(camera.window_half, spec);
+}
+
+Camera framed_camera(Camera camera, const PageSpec& spec) {
+  camera.frame = picture_frame(camera, spec);
+  return camera;
+}
+
 Rect2 drawing_extent(const std::optional<Rect2>& frame, const std::vector<VisibleSegment>& segments) {
   if (frame) return *frame;
   Rect2 r = Rect2::none();

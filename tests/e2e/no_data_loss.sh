@@ -38,7 +38,7 @@ valid_svgs() {
 # Frames 3 and 5 fail (an index out of range); the others draw a turning box.
 cat >seq.hls <<'EOF'
 animate frames 6
-camera c = orbit()
+camera c = lookat(eye: (4, -3, 3), target: (0, 0, 0.5))
 draw box(1, 1, 1) at rotate(z: 10 * frame)
 if frame == 3 or frame == 5 { let x = [1, 2][7] }
 EOF
@@ -86,7 +86,7 @@ rm -f all.pdf
 # ones through. An f-2.png from an earlier run must survive untouched.
 cat >big.hls <<'EOF'
 animate frames 3
-camera c = orbit()
+camera c = lookat(eye: (4, -3, 3), target: (0, 0, 0.5))
 draw box(1, 1, 1)
 if frame == 2 { draw sphere(1.2, 96, 48, crease: 0) at translate(0, 0, 0.5) }
 EOF

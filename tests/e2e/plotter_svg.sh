@@ -47,11 +47,12 @@ grep -q 'inkscape:groupmode' plain.svg && fail "without a plotter the SVG should
 [ $? -eq 64 ] && grep -q "svg takes 'plotter' or 'document'" bad.err || fail "--svg inkjet is not a usage error"
 [ -e bad.svg ] && fail "--svg inkjet wrote a file"
 
-# Off the page: an error naming --clip, and with --clip the strokes are cut at the page's edge.
-"$hlrscript" "$gear" --frames 0 -o big.svg --svg plotter --scale 400 >/dev/null 2>big.err
+# Off the page (fitting the drawing, at a scale: framed by the camera it is cut at the frame): an error
+# naming --clip, and with --clip the strokes are cut at the page's edge.
+"$hlrscript" "$gear" --frames 0 -o big.svg --svg plotter --scale 400 --fit drawing >/dev/null 2>big.err
 [ $? -ne 0 ] && grep -q "off the .* page.*--clip" big.err || fail "a drawing larger than the page is not refused"
 [ -e big.svg ] && fail "a refused plotter SVG was written"
-"$hlrscript" "$gear" --frames 0 -o big.svg --svg plotter --scale 400 --clip >/dev/null 2>&1 || fail "--clip failed"
+"$hlrscript" "$gear" --frames 0 -o big.svg --svg plotter --scale 400 --fit drawing --clip >/dev/null 2>&1 || fail "--clip failed"
 python3 - big.svg <<'PY' || fail "--clip left points off the page"
 import re, sys
 text = open(sys.argv[1]).read()

@@ -257,7 +257,9 @@ TEST(DevicesErrors, PenBeyondThePlottersPens) {
 // The 2-unit cube seen by an ortho camera of height 2 (1 world unit = 1 picture unit) from 34.7° up is
 // 2.85 units tall: its vertical edges 2·cos 34.7° = 1.64, plus its top face, 2.12 deep along the view, at
 // sin 34.7°: 1.21. At --scale 100 that is 285 mm, beyond the 192 mm the 7475A reaches on A4 (x 10–284.7,
-// y 13.9–206 mm): refused unless clipped; clipped, cut at the A4 range's edges (0..11040 × 0..7721).
+// y 13.9–206 mm). Framed by the camera (the default) the picture is cut at the drawing area, which the
+// plotter's reach narrows, so it plots; fitting the drawing instead (--fit drawing), it is refused unless
+// clipped; clipped, cut at the A4 range's edges (0..11040 × 0..7721).
 TEST(DevicesErrors, BeyondThePlottersReachUnlessClipped) {
   const test::TempDir dir(current_test_name());
   const std::string script =
@@ -266,13 +268,17 @@ TEST(DevicesErrors, BeyondThePlottersReachUnlessClipped) {
                 "camera main = ortho(eye: (20, -30, 25), target: (0, 0, 0), height: 2)\n")
           .string();
   const fs::path hpgl = dir.path() / "x.hpgl";
-  const Result r = run({script, "-o", hpgl.string(), "--plotter", "hp7475a", "--scale", "100"});
+  const Result framed = run({script, "-o", hpgl.string(), "--plotter", "hp7475a", "--scale", "100"});
+  EXPECT_EQ(framed.code, 0) << framed.err;
+  fs::remove(hpgl);
+  const Result r =
+      run({script, "-o", hpgl.string(), "--plotter", "hp7475a", "--scale", "100", "--fit", "drawing"});
   EXPECT_EQ(r.code, 73);
   EXPECT_TRUE(contains(r.err, "outside what plotter 'hp7475a' can draw on A4 paper")) << r.err;
   EXPECT_TRUE(contains(r.err, "cut it with --clip")) << r.err;
   EXPECT_EQ(written_files(dir.path()), std::vector<std::string>{});
-  const Result clipped =
-      run({script, "-o", hpgl.string(), "--plotter", "hp7475a", "--scale", "100", "--clip"});
+  const Result clipped = run(
+      {script, "-o", hpgl.string(), "--plotter", "hp7475a", "--scale", "100", "--fit", "drawing", "--clip"});
   ASSERT_EQ(clipped.code, 0) << clipped.err;
   const hlr::test::HpglReplay replay = hlr::test::read_hpgl(read_text(hpgl));
   ASSERT_EQ(replay.error, "");

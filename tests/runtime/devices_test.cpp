@@ -260,12 +260,12 @@ TEST_P(Hp2xxAgainstPng, SameDrawing) {
   const Result b = run({script, "-o", hpgl.string(), "--plotter", "generic", "--plain", "--hidden", "off"});
   ASSERT_EQ(b.code, 0) << b.err;
   const hlr::test::Ink cairo = hlr::test::ink_of_png(png);
-  ASSERT_EQ(cairo.w, 1169);  // A4 landscape at 100 dpi
-  ASSERT_GT(cairo.count, 1000U);
+  ASSERT_EQ(cairo.w, 1169);      // A4 landscape at 100 dpi
+  ASSERT_GT(cairo.count, 500U);  // a drawing, not a few stray pixels
   const fs::path work = dir.path() / "hp2xx";
   fs::create_directories(work);
   const hlr::test::Ink plotted = hlr::test::hp2xx_ink(read_text(hpgl), work, 100);
-  ASSERT_GT(plotted.count, 1000U);
+  ASSERT_GT(plotted.count, 500U);
   // hp2xx crops to the drawing: the normalised boxes match only if the drawing has the same size.
   EXPECT_NEAR(plotted.x1 - plotted.x0, cairo.x1 - cairo.x0, 4);
   EXPECT_NEAR(plotted.y1 - plotted.y0, cairo.y1 - cairo.y0, 4);

@@ -152,14 +152,15 @@ TEST(Labels, WithAFrameCapitalsAreTheirSizeAndLabelsNeverMoveTheDrawing) {
   EXPECT_NEAR(hh.page_ymax - hh.page_ymin, 7, 1e-6);
 }
 
-// Without a frame the page fits the drawing, labels included: a label far to the side of the solids is
-// whole on the page, inside the margins, at its size.
+// Fitting the drawing (fit: "drawing"), without a frame, the page makes room for the labels too: a label
+// far to the side of the solids is whole on the page, inside the margins, at its size.
 TEST(Labels, WithoutAFrameThePageMakesRoomForTheLabels) {
   const hlr::test::TempDir dir(current_test_name());
   for (const char* camera :
        {"orbit(theta: 0, phi: 90, rho: 10, d: 30)", "lookat(eye: (10, 0, 0), target: (0, 0, 0), fov: 30)"}) {
     SCOPED_TRACE(camera);
-    const std::string scene = std::string("draw box(2, 2, 2)\ncamera main = ") + camera + "\n";
+    const std::string scene =
+        std::string("paper A4 (fit: \"drawing\")\ndraw box(2, 2, 2)\ncamera main = ") + camera + "\n";
     const json frame = render_json(dir, scene + "label \"A LONG LABEL TO THE SIDE\" at (0, 6, 3) size: 7\n");
     const double scale = frame["layout"]["mm_per_unit"], ox = frame["layout"]["origin_mm"][0],
                  oy = frame["layout"]["origin_mm"][1];
