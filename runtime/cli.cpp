@@ -149,16 +149,20 @@ void print_stats(std::ostream& err, const PipelineResult& result) {
     for (const FrameRecord& f : result.frames) {
       if (f.path != file) continue;
       const PlanStats& s = f.plan;
-      char line[640];
+      char dashes[96] = "";
+      if (s.hidden_dashes > 0)
+        std::snprintf(dashes, sizeof dashes, " before the hidden lines were cut into %zu dashes",
+                      s.hidden_dashes);
+      char line[768];
       std::snprintf(
           line, sizeof line,
           "frame %d -> %s: %zu visible pieces (%zu drawing-graph edges after snapping, merging, splitting); "
           "pen-down %.1f mm, pen-up %.1f mm "
-          "(mean %.1f, median %.1f), %zu lifts (lower bound %zu), plotting ~%.1f s, planned in %.2f ms, "
+          "(mean %.1f, median %.1f), %zu lifts (lower bound %zu%s), plotting ~%.1f s, planned in %.2f ms, "
           "encoded in %.2f ms (%zu bytes)\n",
           f.time.frame, file.filename().string().c_str(), f.visible_segments, s.merged_pieces, s.pen_down_mm,
-          s.pen_up_mm, s.pen_up_mean_mm, s.pen_up_median_mm, s.lifts, s.lift_lower_bound, s.plot_seconds,
-          s.planning_ms, f.encode_seconds * 1e3, f.encoded_bytes);
+          s.pen_up_mm, s.pen_up_mean_mm, s.pen_up_median_mm, s.lifts, s.lift_lower_bound, dashes,
+          s.plot_seconds, s.planning_ms, f.encode_seconds * 1e3, f.encoded_bytes);
       err << line;
     }
 }

@@ -60,7 +60,10 @@ po::options_description visible_options() {
        "1 picture unit = MM millimetres, centred, instead of the camera's field of view")  //
       ("fit", po::value<std::string>()->value_name("camera|drawing"),
        "what fills the page: the camera's view (default; the same scale in every frame) or what is drawn")  //
-      ("dpi", po::value<std::string>()->value_name("N"), "PNG resolution (default 150)")                    //
+      ("dash", po::value<std::string>()->value_name("DASH,GAP"),
+       "hidden lines on HPGL, G-code and .steps: pen-down dashes of DASH mm with GAP mm between (default "
+       "2,1.5)")                                                                          //
+      ("dpi", po::value<std::string>()->value_name("N"), "PNG resolution (default 150)")  //
       ("line-width", po::value<std::string>()->value_name("MM"),
        "pen width on PDF/SVG/PNG (default 0.25)")  //
       ("plotter", po::value<std::string>()->value_name("NAME"),
@@ -160,6 +163,28 @@ bool either_option(const po::variables_map& vm, const char* name, const char* ye
   return true;
 }
 
+// --dash DASH,GAP: two lengths in mm, each from 0.1 to 100; --dash solid: hidden strokes drawn whole.
+bool parse_dash(const std::string& text, std::optional<DashPattern>& out, std::string& error) {
+  if (text == "solid") {
+    out.reset();
+    return true;
+  }
+  const auto number = [](std::string_view s, double& v) {
+    const auto r = std::from_chars(s.data(), s.data() + s.size(), v);
+    return r.ec == std::errc() && r.ptr == s.data() + s.size() && v >= 0.1 && v <= 100;
+  };
+  const std::size_t comma = text.find(',');
+  double dash = 0, gap = 0;
+  if (comma == std::string::npos || !number(std::string_view(text).substr(0, comma), dash) ||
+      !number(std::string_view(text).substr(comma + 1), gap)) {
+    error = "--dash " + text +
+            ": expected DASH,GAP in millimetres, each from 0.1 to 100 (e.g. --dash 2,1.5), or solid";
+    return false;
+  }
+  out = {dash, gap};
+  return true;
+}
+
 bool parse_device_options(const po::variables_map& vm, DeviceOptions& d, std::string& error) {
   if (vm.count("landscape") && vm.count("portrait")) {
     error = "--landscape and --portrait exclude each other";
@@ -196,6 +221,7 @@ bool parse_device_options(const po::variables_map& vm, DeviceOptions& d, std::st
       !either_option(vm, "svg", "plotter", "document", d.plotter_svg, error) ||
       !either_option(vm, "hpgl-moves", "relative", "absolute", d.relative, error))
     return false;
+  if (vm.count("dash") && !parse_dash(vm["dash"].as<std::string>(), d.dash, error)) return false;
   std::optional<bool> fit_camera;
   if (!either_option(vm, "fit", "camera", "drawing", fit_camera, error)) return false;
   if (fit_camera) d.fit = *fit_camera ? PageFit::Camera : PageFit::Drawing;

@@ -57,6 +57,8 @@ struct DeviceOptions {
   std::optional<double> margin_mm;           // --margin
   std::optional<double> mm_per_unit;         // --scale: 1 picture unit = N mm instead of fit-to-page
   std::optional<PageFit> fit;                // --fit camera|drawing: what sets the page scale
+  // --dash DASH,GAP: hidden lines on plotters as pen-down dashes; --dash solid (unset): whole strokes.
+  std::optional<DashPattern> dash = DashPattern{};
   double dpi = 150;                          // --dpi (PNG)
   bool decorations = true;                   // --plain: no frame border or caption
   double step_mm = 0.1;                      // --step: the incremental plotter's step (.steps)

@@ -270,6 +270,7 @@ void resolve_device(const FrameScene& scene, const RunSettings& run, FrameSettin
   plot.object_pens = scene.object_pens;
   plot.hidden_pen = scene.hidden_pen;
   plot.include_hidden = s.hidden;
+  if (planning.hidden_as_dashes) plot.hidden_dashes = run.device.dash;  // unset with --dash solid
   s.caption = caption_for(scene, *s.camera, run);
 }
 

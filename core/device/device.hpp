@@ -30,6 +30,7 @@ struct DevicePlanning {
   PlotterSpeeds speeds;      // for the plotting-time estimate
   double min_margin_mm = 0;  // the pen reaches no closer to the sheet's edge: the layout keeps this margin
   bool text_as_strokes = false;  // plotters draw the caption as single-stroke text (--text overrides)
+  bool hidden_as_dashes = false;  // plotters draw hidden strokes as planned pen-down dashes
 };
 
 // One frame, laid out and planned: what every device draws (plot) and what JSON also describes.

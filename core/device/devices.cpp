@@ -195,6 +195,7 @@ class HpglDevice : public OneFrameDevice {
     p.min_margin_mm = hpgl_min_margin_mm(profile_, w, h, o_.paper);
     p.home = hpgl_home_on_page(profile_, w, h, o_.paper);
     p.text_as_strokes = true;
+    p.hidden_as_dashes = true;
     return p;
   }
   std::string page_bytes(const PlotPage& page) const override { return to_hpgl(page, profile_, o_); }
@@ -214,6 +215,7 @@ class StepDevice : public OneFrameDevice {
     p.grid_mm = o_.step_mm;
     p.home = {0, h};
     p.speeds = {20, 20, 0.1};
+    p.hidden_as_dashes = true;
     return p;
   }
   std::string page_bytes(const PlotPage& page) const override { return to_plotter_steps(page, o_); }
@@ -280,6 +282,7 @@ class GcodeDevice : public OneFrameDevice {
     p.speeds = gcode_speeds(profile_);
     p.home = gcode_home_on_page(profile_, w, h);  // throws for a page larger than the work area
     p.text_as_strokes = true;
+    p.hidden_as_dashes = true;
     return p;
   }
   std::string page_bytes(const PlotPage& page) const override { return to_gcode(page, profile_, o_); }

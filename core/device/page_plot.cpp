@@ -89,6 +89,7 @@ PagePlot plot_page(const std::vector<VisibleSegment>& segments, const std::optio
     out.page.caption.clear();  // drawn: no device prints it again
   }
   PenPlan plan = plan_pen_strokes(pieces, o.plan);
+  if (o.hidden_dashes && o.include_hidden) dash_hidden_strokes(plan, *o.hidden_dashes, o.plan);
   out.page.strokes = std::move(plan.strokes);
   out.stats = plan.stats;
   return out;

@@ -10,6 +10,7 @@
 #include "core/device/plot_page.hpp"
 #include "core/geometry/rect2.hpp"
 #include "core/hlr/visible_segment.hpp"
+#include "core/plan/hidden_dashes.hpp"
 #include "core/plan/pen_plan.hpp"
 
 namespace hlr {
@@ -37,6 +38,9 @@ struct PagePlotOptions {
   // What the layout fits instead of the frame or the pieces: fixed before labels were added, so that
   // they never move the drawing.
   std::optional<Rect2> extent;
+  // Plotters: hidden strokes cut into pen-down dashes of this pattern after planning (they have no
+  // dashed line of their own); unset: hidden strokes stay whole (the cairo devices dash them as they draw).
+  std::optional<DashPattern> hidden_dashes;
 };
 
 // The caption's size in stroke text: about the 10 pt of the printed caption.

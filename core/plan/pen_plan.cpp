@@ -185,6 +185,8 @@ void file_order_strokes(const std::vector<Group>& groups, double grid, std::vect
   }
 }
 
+}  // namespace
+
 void fill_travel_stats(const std::vector<PlotStroke>& strokes, const PlanOptions& o, PlanStats& st) {
   st.lifts = strokes.size();
   st.pen_down_mm = 0;
@@ -214,8 +216,6 @@ void fill_travel_stats(const std::vector<PlotStroke>& strokes, const PlanOptions
   st.plot_seconds = st.pen_down_mm / o.speeds.pen_down_mm_per_s + st.pen_up_mm / o.speeds.pen_up_mm_per_s +
                     static_cast<double>(st.lifts) * o.speeds.lift_s;
 }
-
-}  // namespace
 
 PenPlan plan_pen_strokes(const std::vector<PlotPiece>& pieces, const PlanOptions& options) {
   const Clock::time_point t0 = Clock::now();

@@ -75,6 +75,9 @@ struct PlanStats {
   std::size_t improvement_moves = 0;  // Optimized: improving 2-opt / Or-opt / re-entry moves applied
   bool kept_greedy = false;           // Optimized: the greedy plan was built, was shorter and was kept
   bool budget_exhausted = false;      // Optimized: the clock (time_budget_ms) stopped the improvement
+  // Hidden strokes cut into pen-down dashes for a plotter (core/plan/hidden_dashes.hpp): the dashes drawn,
+  // each a lift of its own, counted in `lifts` (lift_lower_bound stays the undashed drawing's).
+  std::size_t hidden_dashes = 0;
 };
 
 struct PenPlan {
@@ -94,5 +97,9 @@ struct PenPlan {
 // groups of up to 10 strokes are ordered exactly instead. It is deterministic unless time_budget_ms runs
 // out first (stats.budget_exhausted); its work is otherwise capped in proportion to the stroke count.
 PenPlan plan_pen_strokes(const std::vector<PlotPiece>& pieces, const PlanOptions& options = {});
+
+// Sets the figures of what `strokes` draw: lifts, pen_down_mm, the pen-up moves from options.home through
+// the strokes and back (pen_up_mm, mean, median) and plot_seconds from options.speeds.
+void fill_travel_stats(const std::vector<PlotStroke>& strokes, const PlanOptions& options, PlanStats& stats);
 
 }  // namespace hlr

@@ -148,7 +148,7 @@ def json_segments(doc, origin):
     page_h = doc["page"]["height_mm"]
     frame = doc["frames"][0]
     out = []
-    # The hidden layer (style hidden dashed) is drawn by plotters like any stroke, with its pen.
+    # The hidden layer (style hidden dashed, drawn whole with --dash solid) is drawn like any stroke, with its pen.
     strokes = frame["strokes"] + frame.get("hidden_strokes", [])
     pens = frame["stroke_pens"] + frame.get("hidden_stroke_pens", [])
     if len(strokes) != len(pens):
@@ -197,7 +197,9 @@ def check(hlrscript, script, work, name, profile_name, profile, extra=()):
     # --plain: the drawing itself. The caption's letters are planned from each device's home, and where
     # strokes of neighbouring letters overlap the two plans may split them differently; caption() checks them.
     common = [script, "--frames", "0", "--plain"] + list(extra)
-    run(hlrscript, common + ["-o", gcode] + (["--plotter", profile_name] if profile_name else []))
+    # --dash solid: the hidden layer whole, so that its segments match JSON's too (the dashes plotters draw
+    # by default are checked in tests/runtime/plotter_hidden_lines_test.cpp).
+    run(hlrscript, common + ["-o", gcode, "--dash", "solid"] + (["--plotter", profile_name] if profile_name else []))
     run(hlrscript, common + ["-o", js])
     with open(gcode) as f:
         text = f.read()
