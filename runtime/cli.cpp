@@ -210,7 +210,7 @@ int run_program(const Program& program, const CliOptions& o, std::ostream& out, 
     asked = frames;
 
     PipelineOptions options;
-    options.run.title = name;
+    options.run.title = o.title.value_or(name);
     options.run.frame_count = frame_count;
     options.run.camera = o.camera;
     options.run.hidden = o.hidden;

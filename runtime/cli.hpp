@@ -29,6 +29,7 @@ struct CliOptions {
   enum class Mode { Render, Check, Watch, Demo, Repl, Help, Version, ListPlotters } mode = Mode::Render;
   bool list_cameras = false;  // --list-cameras FILE: Check, printing the cameras of frame 0
   std::string script;
+  std::optional<std::string> title;   // the captions' and metadata's name (the REPL's); else the script's
   std::string help_topic;             // hlrscript help TOPIC
   std::optional<std::string> output;  // -o
   std::optional<std::string> camera;

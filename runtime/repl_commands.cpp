@@ -47,7 +47,8 @@ const Command kCommands[] = {
     {"hidden", ":hidden on|off", "draw hidden lines dashed, or not"},
     {"stats", ":stats", "faces, edges, visible pieces, pen plan, render time of the current frame"},
     {"scene", ":scene", "what is drawn, with sizes, and the cameras"},
-    {"undo", ":undo", "take back the last accepted input"},
+    {"undo", ":undo",
+     "take back the last change: an input, :load, :orbit, :zoom, :dolly, :camera, :hidden, :frame"},
     {"save", ":save FILE", "write the session as a script that renders the same drawing"},
     {"quit", ":quit", "leave (Ctrl-D too)"},
 };
@@ -86,33 +87,39 @@ ReplReply ReplSession::command(const std::string& line) {
   if (cmd == "reload") return loaded_ ? load(*loaded_) : error("nothing loaded yet: :load FILE");
   if (cmd == "undo") {
     if (undo_.empty()) return error("nothing to undo");
-    chunks_ = std::move(undo_.back());
+    auto [what, before] = std::move(undo_.back());
     undo_.pop_back();
-    return done("undone; the session has " + std::to_string(chunks_.size()) + " inputs\n");
+    restore(std::move(before));
+    return done("undone: " + what + "\n");
   }
   if (cmd == "orbit" || cmd == "zoom" || cmd == "dolly") return step_camera(cmd, arg);
   if (cmd == "hidden") {
     if (arg != "on" && arg != "off") return error(":hidden needs on or off");
+    State before = state();
     hidden_ = arg == "on";
+    remember(":hidden " + arg, std::move(before));
     return done(std::string("hidden lines ") + (*hidden_ ? "dashed" : "off") + "\n");
   }
   if (cmd == "camera") {
+    const std::string dropped =
+        step_ ? "; the :orbit, :zoom and :dolly steps are dropped (:undo brings them back)" : "";
+    State before = state();
     if (arg.empty()) {
+      if (!camera_ && !step_) return done("drawing with the last camera declared, as before\n");
       camera_.reset();
       step_.reset();
-      return done("drawing with the last camera declared\n");
+      remember(":camera", std::move(before));
+      return done("drawing with the last camera declared" + dropped + "\n");
     }
-    const std::optional<std::string> before = camera_;
-    const std::optional<CameraAdjustment> stepped = step_;
     camera_ = arg;
     step_.reset();  // a camera chosen anew starts where its statement puts it
     std::string message;
     if (!view(message)) {
-      camera_ = before;
-      step_ = stepped;
+      restore(std::move(before));
       return error(message);
     }
-    return done("drawing with camera " + arg + "\n");
+    remember(":camera " + arg, std::move(before));
+    return done("drawing with camera " + arg + dropped + "\n");
   }
   if (cmd == "frames") return frames();
   if (cmd == "frame") {
@@ -120,10 +127,13 @@ ReplReply ReplSession::command(const std::string& line) {
     const long n = std::strtol(arg.c_str(), &end, 10);
     if (arg.empty() || *end != '\0' || n < 0 || n > 1'000'000)
       return error(":frame needs a frame number, as in :frame 3");
-    const int before = frame_;
+    State before = state();
     frame_ = static_cast<int>(n);
     const ReplReply r = scene();
-    if (r.kind == ReplReply::Kind::Error) frame_ = before;
+    if (r.kind == ReplReply::Kind::Error)
+      restore(std::move(before));
+    else if (before.frame != frame_)
+      remember(":frame " + arg, std::move(before));
     return r;
   }
   return error("unknown command");
@@ -142,7 +152,7 @@ ReplReply ReplSession::step_camera(const std::string& cmd, const std::string& ar
                      ? ":orbit needs degrees: :orbit 15 or :orbit 15 -10"
                      : ":" + cmd + " needs a number, as in :" + cmd + (cmd == "zoom" ? " 1.5" : " 2"));
   if (cmd == "zoom" && !(x > 0)) return error(":zoom needs a positive factor");
-  const std::optional<CameraAdjustment> before = step_;
+  State before = state();
   if (!step_) {
     // Pivot: the middle of what is drawn in the current frame, fixed from now on.
     std::string message;
@@ -153,7 +163,7 @@ ReplReply ReplSession::step_camera(const std::string& cmd, const std::string& ar
     CameraAdjustment a;
     if (!e.empty()) a.pivot = e.middle();
     step_ = a;
-    stepped_name_ = v->camera + "_view";
+    stepped_name_ = "adjusted_" + v->camera;  // a name of its own in the saved script
   }
   if (cmd == "orbit") {
     step_->theta_deg += x;
@@ -164,7 +174,10 @@ ReplReply ReplSession::step_camera(const std::string& cmd, const std::string& ar
     step_->dolly += x;
   }
   const ReplReply shown = show();
-  if (shown.kind == ReplReply::Kind::Error) step_ = before;
+  if (shown.kind == ReplReply::Kind::Error)
+    restore(std::move(before));
+  else
+    remember(":" + cmd + " " + arguments, std::move(before));
   return shown;
 }
 

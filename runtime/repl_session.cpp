@@ -131,17 +131,13 @@ std::unique_ptr<Program> session_program(const std::string& text, const std::opt
 
 ReplReply ReplSession::feed(const std::string& line) {
   // The statements change only once an input succeeded; the view settings a command tries are put back.
-  const int frame = frame_;
-  const std::optional<std::string> camera = camera_;
-  const std::optional<CameraAdjustment> step = step_;
-  const std::string stepped_name = stepped_name_;
+  State before = state();
+  const std::size_t changes = undo_.size();
   try {
     return feed_line(line);
   } catch (const RenderCancelled&) {
-    frame_ = frame;
-    camera_ = camera;
-    step_ = step;
-    stepped_name_ = stepped_name;
+    restore(std::move(before));
+    undo_.resize(std::min(undo_.size(), changes));
     pending_.clear();
     return error("stopped (Ctrl-C); the session is as it was");
   }
@@ -234,7 +230,7 @@ ReplReply ReplSession::accept(const std::string& text) {
       out += "scene: " + std::to_string(scene.scene.objects.size()) + " objects, " + std::to_string(faces) +
              " faces\n";
     }
-    undo_.push_back(chunks_);
+    remember("'" + trim(text.substr(0, text.find('\n'))) + "'", state());
     chunks_ = std::move(next);
     return done(out);
   } catch (const EvalError& e) {
@@ -245,8 +241,9 @@ ReplReply ReplSession::accept(const std::string& text) {
 }
 
 ReplReply ReplSession::evaluate_expression(const std::string& text) {
+  // The expression on a line of its own, so that a message quotes only what was typed, at its columns.
   const auto program =
-      session_program(join(chunks_) + "let " + kValueName + " = " + text, loaded_, access_, limits_);
+      session_program(join(chunks_) + "let " + kValueName + " =\n" + text, loaded_, access_, limits_);
   if (!program->parsed()) return error(diagnostics_text(program->syntax_errors(), *program));
   try {
     std::string shown;
@@ -373,25 +370,80 @@ ReplReply ReplSession::frames() {
   }
 }
 
+namespace {
+
+// The text of the camera expression `name` is declared with (the last declared for nullopt), searching
+// the chunks' top-level statements from the end.
+template <typename Chunks>
+std::optional<std::string> camera_expression(const Chunks& chunks, const std::optional<std::string>& name) {
+  for (auto chunk = chunks.rbegin(); chunk != chunks.rend(); ++chunk) {
+    const lang::ParseResult parsed = lang::parse(chunk->text, "<input>");
+    if (!parsed.ok()) continue;
+    for (auto stmt = parsed.script->statements.rbegin(); stmt != parsed.script->statements.rend(); ++stmt) {
+      const auto* camera = std::get_if<lang::CameraStmt>(&stmt->node);
+      if (!camera || (name && camera->name.text != *name)) continue;
+      const lang::SourceSpan& span = camera->value->span;
+      return chunk->text.substr(span.begin, span.end - span.begin);
+    }
+  }
+  return std::nullopt;
+}
+
+// Makes every top-level `style hidden` statement of the chunks say `on`; false when there is none.
+template <typename Chunks>
+bool set_hidden_style(Chunks& chunks, bool on) {
+  bool found = false;
+  for (auto& chunk : chunks) {
+    const lang::ParseResult parsed = lang::parse(chunk.text, "<input>");
+    if (!parsed.ok()) continue;
+    std::string text = chunk.text;
+    const auto& statements = parsed.script->statements;
+    for (auto stmt = statements.rbegin(); stmt != statements.rend(); ++stmt) {  // from the end: spans hold
+      const auto* style = std::get_if<lang::StyleStmt>(&stmt->node);
+      if (!style || style->property.text != "hidden") continue;
+      found = true;
+      if ((style->value.text == "dashed") == on) continue;  // already says so (and keeps its pen)
+      text.replace(stmt->span.begin, stmt->span.end - stmt->span.begin,
+                   on ? "style hidden dashed" : "style hidden off");
+    }
+    chunk.text = std::move(text);
+  }
+  return found;
+}
+
+}  // namespace
+
 std::string ReplSession::script() const {
   std::vector<Chunk> chunks = chunks_;
   std::string tail;
-  if (camera_) {
-    // The chosen camera is the one a script draws with when it is declared last.
+  // :hidden wins over the session's own style statement, which would otherwise be set twice.
+  if (hidden_ && !set_hidden_style(chunks, *hidden_))
+    tail += *hidden_ ? "style hidden dashed\n" : "style hidden off\n";
+  std::string text;
+  if (step_) {
+    text = view_text(chunks);  // the adjusted camera, declared last, draws
+  } else if (camera_) {
+    // The chosen camera draws when it is declared last: its statement moved there when it declares
+    // nothing else, else the camera declared again there.
     const auto it = std::find_if(chunks.begin(), chunks.end(), [&](const Chunk& c) {
-      return c.cameras == std::vector<std::string>{*camera_} && c.names.empty();
+      return c.cameras == std::vector<std::string>{*camera_} && c.names.empty() &&
+             c.text.find('\n') + 1 == c.text.size();
     });
     if (it != chunks.end()) {
       const Chunk moved = *it;
       chunks.erase(it);
       chunks.push_back(moved);
+      text = join(chunks);
+    } else if (const std::optional<std::string> expr = camera_expression(chunks, camera_)) {
+      text = join(chunks) + "camera drawn_" + *camera_ + " = " + *expr + "\n";
     } else {
-      tail +=
-          "# drawn in the session with camera " + *camera_ + ": hlrscript FILE --camera " + *camera_ + "\n";
+      text = join(chunks) + "# drawn in the session with camera " + *camera_ + ": hlrscript FILE --camera " +
+             *camera_ + "\n";
     }
+  } else {
+    text = join(chunks);
   }
-  if (hidden_) tail += *hidden_ ? "style hidden dashed\n" : "style hidden off\n";
-  return "# Saved from an hlrscript session.\n" + view_text(chunks) + tail;
+  return "# Saved from an hlrscript session.\n" + text + tail;
 }
 
 ReplReply ReplSession::save(const std::string& file) {
@@ -407,14 +459,20 @@ ReplReply ReplSession::save(const std::string& file) {
   } catch (const DeviceError& e) {
     return error(e.what());
   }
-  return done("saved " + std::to_string(chunks_.size()) + " inputs to " + file + "\n");
+  const std::size_t n = chunks_.size();
+  return done("saved the session to " + file + " (" + std::to_string(n) + (n == 1 ? " input" : " inputs") +
+              ")\n");
 }
 
 ReplReply ReplSession::render(const std::string& file) {
   const auto program = session_program(view_text(chunks_), loaded_, access_, limits_);
+  if (!file.empty() && !device_kind_for(file))
+    return error(":render " + file + ": unknown output type '" + fs::path(file).extension().string() +
+                 "'; supported: " + supported_extensions());
   CliOptions o;
   o.mode = CliOptions::Mode::Repl;  // the REPL's Ctrl-C handler stays; a stop is reported as the REPL's
   o.script = "<session>";
+  o.title = loaded_ ? loaded_->filename().string() : std::string("hlrscript session");
   if (!file.empty()) o.output = file;
   o.camera = drawn_camera();
   o.hidden = hidden_;
@@ -436,10 +494,12 @@ ReplReply ReplSession::load(const fs::path& path) {
   const auto program = session_program(text, path, access_, limits_);
   try {
     const FrameScene scene = evaluate_frame(*program, 0);
-    undo_.push_back(chunks_);
+    remember(":load " + path.string(), state());
     chunks_ = {chunk};
     loaded_ = path;
     frame_ = 0;
+    camera_.reset();  // the cameras are the new script's
+    step_.reset();
     std::size_t faces = 0;
     for (const SceneObject& o : scene.scene.objects) faces += o.solid->faces.size();
     return done(diagnostics_text(scene.warnings, *program) + "loaded " + path.string() + ": " +
@@ -459,22 +519,22 @@ std::string ReplSession::view_text(const std::vector<Chunk>& chunks) const {
   std::string text = join(chunks);
   if (!step_) return text;
   // The expression of the camera being stepped: the chosen one, else the last declared.
-  for (auto chunk = chunks.rbegin(); chunk != chunks.rend(); ++chunk) {
-    const lang::ParseResult parsed = lang::parse(chunk->text, "<input>");
-    if (!parsed.ok()) continue;
-    for (auto stmt = parsed.script->statements.rbegin(); stmt != parsed.script->statements.rend(); ++stmt) {
-      const auto* camera = std::get_if<lang::CameraStmt>(&stmt->node);
-      if (!camera || (camera_ && camera->name.text != *camera_)) continue;
-      const lang::SourceSpan& span = camera->value->span;
-      const std::string expr = chunk->text.substr(span.begin, span.end - span.begin);
-      const CameraAdjustment& a = *step_;
-      return text + "camera " + stepped_name_ + " = adjust(" + expr +
-             ", theta: " + format_number(a.theta_deg) + ", phi: " + format_number(a.phi_deg) +
-             ", zoom: " + format_number(a.zoom) + ", dolly: " + format_number(a.dolly) +
-             ", pivot: " + point_text(a.pivot) + ")\n";
-    }
-  }
-  return text;
+  const std::optional<std::string> expr = camera_expression(chunks, camera_);
+  if (!expr) return text;
+  const CameraAdjustment& a = *step_;
+  return text + "camera " + stepped_name_ + " = adjust(" + *expr + ", theta: " + format_number(a.theta_deg) +
+         ", phi: " + format_number(a.phi_deg) + ", zoom: " + format_number(a.zoom) +
+         ", dolly: " + format_number(a.dolly) + ", pivot: " + point_text(a.pivot) + ")\n";
+}
+
+void ReplSession::restore(State s) {
+  chunks_ = std::move(s.chunks);
+  frame_ = s.frame;
+  hidden_ = s.hidden;
+  camera_ = std::move(s.camera);
+  step_ = s.step;
+  stepped_name_ = std::move(s.stepped_name);
+  loaded_ = std::move(s.loaded);
 }
 
 }  // namespace hlr::runtime

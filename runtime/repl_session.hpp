@@ -87,12 +87,27 @@ class ReplSession {
   std::optional<std::string> drawn_camera() const;  // the name to draw with, when not the last declared
   std::optional<View> view(std::string& error) const;
 
+  // Everything an input or a command may change, as :undo puts it back.
+  struct State {
+    std::vector<Chunk> chunks;
+    int frame = 0;
+    std::optional<bool> hidden;
+    std::optional<std::string> camera;
+    std::optional<CameraAdjustment> step;
+    std::string stepped_name;
+    std::optional<std::filesystem::path> loaded;
+  };
+  State state() const { return {chunks_, frame_, hidden_, camera_, step_, stepped_name_, loaded_}; }
+  void restore(State s);
+  // After a change succeeded: `before` is what one :undo of `what` (":orbit 30", "a statement") restores.
+  void remember(std::string what, State before) { undo_.push_back({std::move(what), std::move(before)}); }
+
   TerminalSize size_;
   TerminalGraphics graphics_ = TerminalGraphics::Braille;
   PixelSize pixels_{0, 0};
   std::vector<Chunk> chunks_;
-  std::vector<std::vector<Chunk>> undo_;  // the session before each accepted input
-  std::string pending_;                   // lines of an unfinished statement
+  std::vector<std::pair<std::string, State>> undo_;  // what each change did, and the state before it
+  std::string pending_;                              // lines of an unfinished statement
   int frame_ = 0;
   std::optional<bool> hidden_;                   // :hidden on|off
   std::optional<std::string> camera_;            // :camera NAME

@@ -51,9 +51,20 @@ expect "camera c, frame 0: 9 visible pieces"
 # The picture has the cube's outline: vertical edges drawn in braille (a full left or right dot column).
 screen | grep -qF -e '⡇' -e '⢸' || { echo "no braille picture"; screen; exit 1; }
 keys ':orbit 30 10' Enter
-expect "camera c_view, frame 0"
+expect "camera adjusted_c, frame 0"
+# :undo takes back the orbit (and only the orbit); a second orbit is saved as the camera drawn.
+keys ':undo' Enter
+expect "undone: :orbit 30 10"
+keys ':orbit 30 10' Enter
+expect "camera adjusted_c, frame 0"
+keys ':hidden on' Enter
+expect "hidden lines dashed"
 keys ':save saved.hls' Enter
-expect "saved 3 inputs to saved.hls"
+expect "saved the session to saved.hls (3 inputs)"
+grep -q '^camera adjusted_c = adjust(lookat(eye: (5, -7, 4), target: (0, 0, 0)), theta: 30, phi: 10' "$work/saved.hls" ||
+  { echo "the orbit is not saved"; cat "$work/saved.hls"; exit 1; }
+grep -q '^style hidden dashed$' "$work/saved.hls" || { echo ":hidden on is not saved"; cat "$work/saved.hls"; exit 1; }
+"$hlrscript" check "$work/saved.hls" >/dev/null || { echo "the saved script does not run"; exit 1; }
 keys C-d
 for _ in $(seq 100); do tmux -S "$socket" has-session -t "$session" 2>/dev/null || break; sleep 0.1; done
 grep -q 'q\\040=\\04040\\040+\\0402' "$XDG_STATE_HOME/hlrscript/history" || { echo "history not kept"; cat "$XDG_STATE_HOME/hlrscript/history"; exit 1; }

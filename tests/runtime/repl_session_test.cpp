@@ -75,7 +75,7 @@ TEST(ReplSession, ARedefinitionReplacesTheOldOneInPlace) {
   EXPECT_EQ(s.feed("let w = 5").text, "replaced: let w = 2\nw = 5\n");
   EXPECT_EQ(s.script(),
             "# Saved from an hlrscript session.\nlet w = 5\ndraw box(w, 1, 1)\ncamera c = orbit()\n");
-  EXPECT_EQ(s.feed(":undo").text, "undone; the session has 3 inputs\n");
+  EXPECT_EQ(s.feed(":undo").text, "undone: 'let w = 5'\n");
   EXPECT_NE(s.script().find("let w = 2"), std::string::npos);
 }
 
@@ -256,7 +256,7 @@ TEST_F(ReplFiles, SaveWritesAScriptThatRendersTheSameDrawing) {
             "camera top = ortho(eye: (2, 1, 20), target: (2, 1, 0), up: (0, 1, 0), height: 12)"});
   feed_all(s, {":camera side", ":hidden on"});
   const fs::path saved = dir_ / "session.hls";
-  EXPECT_EQ(s.feed(":save " + saved.string()).text, "saved 5 inputs to " + saved.string() + "\n");
+  EXPECT_EQ(s.feed(":save " + saved.string()).text, "saved the session to " + saved.string() + " (5 inputs)\n");
   EXPECT_EQ(s.feed(":render " + (dir_ / "from-session.json").string()).kind, ReplReply::Kind::Done);
   const test::CliResult r = test::run({saved.string(), "-o", (dir_ / "from-file.json").string()});
   ASSERT_EQ(r.code, 0) << r.err;
@@ -277,14 +277,14 @@ TEST_F(ReplFiles, OrbitZoomAndDollyChangeThePictureAndSaveAsAdjust) {
   const ReplReply orbited = s.feed(":orbit 60 15");
   ASSERT_EQ(orbited.kind, ReplReply::Kind::Done) << orbited.text;
   EXPECT_NE(orbited.text, before);  // the picture moved
-  EXPECT_NE(orbited.text.find("camera c_view, frame 0"), std::string::npos) << orbited.text;
+  EXPECT_NE(orbited.text.find("camera adjusted_c, frame 0"), std::string::npos) << orbited.text;
   EXPECT_EQ(s.feed(":zoom 2").kind, ReplReply::Kind::Done);
   EXPECT_EQ(s.feed(":dolly 1.5").kind, ReplReply::Kind::Done);
   EXPECT_EQ(s.feed(":zoom -1").kind, ReplReply::Kind::Error);
   EXPECT_EQ(s.feed(":orbit left").kind, ReplReply::Kind::Error);
   // Saved as the camera's own expression, adjusted about the middle of the box.
   EXPECT_NE(
-      s.script().find("camera c_view = adjust(lookat(eye: (10, -6, 5), target: (1.5, 1, 0.5)), theta: 60, "
+      s.script().find("camera adjusted_c = adjust(lookat(eye: (10, -6, 5), target: (1.5, 1, 0.5)), theta: 60, "
                       "phi: 15, zoom: 2, dolly: 1.5, pivot: (1.5, 1, 0.5))"),
       std::string::npos)
       << s.script();
