@@ -8,6 +8,9 @@ namespace hlr::lang {
 
 SourceFile::SourceFile(FileId id, std::string name, std::string text)
     : id_(id), name_(std::move(name)), text_(std::move(text)) {
+  // A UTF-8 byte-order mark, which some editors write first, is not part of the script: dropped, so that
+  // it is neither an unexpected character nor a column.
+  if (text_.starts_with("\xEF\xBB\xBF")) text_.erase(0, 3);
   // Counted first, so the tables are allocated once (a generated script has millions of lines); then
   // each line is found by memchr and checked for non-ASCII bytes in one branch-free pass.
   const std::size_t lines = 1 + static_cast<std::size_t>(std::count(text_.begin(), text_.end(), '\n'));

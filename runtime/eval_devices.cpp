@@ -14,6 +14,7 @@
 #include "core/device/gcode_profile.hpp"
 #include "core/device/hpgl_profile.hpp"
 #include "core/device/pen_style.hpp"
+#include "core/device/stroke_glyphs.hpp"
 #include "core/format_number.hpp"
 #include "core/limits.hpp"
 #include "runtime/eval_detail.hpp"
@@ -528,6 +529,22 @@ void Evaluator::exec_label(const lang::LabelStmt& label, const lang::Stmt& stmt,
     setting.size_mm = size.as_number();
   }
   if (label.pen) setting.pen = eval_pen_number(*label.pen->number, scope);
+  // Characters the single-stroke fonts do not hold are drawn as boxes: said once per label.
+  std::u32string missing;
+  try {
+    missing = missing_glyphs(setting.text);
+  } catch (const DeviceError&) {  // no fonts: the device that draws the label says so
+  }
+  if (!missing.empty()) {
+    lang::Diagnostic d;
+    d.severity = lang::Severity::Warning;
+    d.span = label.text->span;
+    std::string names;
+    for (const char32_t c : missing) names += (names.empty() ? "" : ", ") + describe_code_point(c);
+    d.message = "the label has characters with no single-stroke letter, drawn as a box: " + names;
+    d.hint = "labels draw Latin letters (with accents), digits, punctuation, ß, °, ², ³, µ and Greek";
+    budget_.warn(std::move(d));
+  }
   out_.labels.push_back(std::move(setting));
 }
 

@@ -3,8 +3,9 @@
 // Roman ("futural", Debian's hershey-fonts-data, read through libhersheyfont): cap height 21 font units,
 // descenders to −7, each glyph its own advance width.
 //
-// Text is ASCII: any other byte, and control characters, are drawn as '?'. Coordinates are page
-// millimetres, y down, from the left end of the baseline.
+// Text is UTF-8: Latin letters with accents, ß, °, ², ³, µ and Greek are drawn too
+// (core/device/stroke_glyphs.hpp); a character with no glyph, an ill-formed byte or a control character
+// is drawn as a box. Coordinates are page millimetres, y down, from the left end of the baseline.
 #pragma once
 
 #include <string_view>

@@ -187,6 +187,18 @@ TEST(Diagnostics, CaretCountsCodePoints) {
   EXPECT_NE(text.find("     |                 ^\n"), std::string::npos) << text;
 }
 
+// A UTF-8 byte-order mark, as some editors save it, is not part of the script: it parses, and a message
+// on the first line counts columns from the first visible character.
+TEST(Diagnostics, AByteOrderMarkIsSkipped) {
+  EXPECT_TRUE(parse("\xEF\xBB\xBFlet a = 1\n", "bom.hls").ok());
+  const ParseResult result = parse("\xEF\xBB\xBFlet s = 1 @\n", "bom.hls");
+  ASSERT_EQ(result.diagnostics.size(), 1U);
+  EXPECT_EQ(result.source->position(result.diagnostics[0].span.begin).column, 11U);
+  const std::string text = format(result.diagnostics[0], *result.source);
+  EXPECT_NE(text.find("   1 | let s = 1 @\n"), std::string::npos) << text;
+  EXPECT_EQ(text.find("\xEF\xBB\xBF"), std::string::npos) << text;
+}
+
 // The code points of `text` (UTF-8), one string each.
 std::vector<std::string> code_points(const std::string& text) {
   std::vector<std::string> out;

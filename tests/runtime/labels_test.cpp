@@ -219,5 +219,32 @@ TEST(Labels, ALabelBehindTheEyeIsNotDrawn) {
   EXPECT_EQ(away.visible + away.hidden, 0);
 }
 
+// UTF-8 as editors write it: a script saved with a byte-order mark, a label with umlauts, ß and a
+// superscript draws every letter with no warning; a character the fonts lack is named once and drawn
+// as a box.
+TEST(Labels, AccentedLettersAreDrawnAndMissingOnesNamed) {
+  const hlr::test::TempDir dir(current_test_name());
+  const std::string text =
+      "\xEF\xBB\xBF" + std::string(kScene) + "label \"Größe 1 m³\" at page (20, 20) size: 5\n";
+  const std::string script = dir.write("utf8.hls", text).string();
+  const fs::path out = dir.path() / "utf8.json";
+  const test::CliResult r = test::run({script, "-o", out.string(), "--text", "stroke"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(r.err.find("warning"), std::string::npos) << r.err;
+  const std::string bad =
+      dir.write("bad.hls", std::string(kScene) + "label \"ok ✓ ✓\" at (0, 0, 1)\n").string();
+  const test::CliResult w = test::run({bad, "-o", (dir.path() / "bad.json").string()});
+  ASSERT_EQ(w.code, 0) << w.err;
+  EXPECT_NE(
+      w.err.find("bad.hls:3:7: warning: the label has characters with no single-stroke letter, drawn as "
+                 "a box: U+2713 '✓'\n"),
+      std::string::npos)
+      << w.err;
+  std::size_t count = 0;
+  for (std::size_t at = w.err.find("U+2713"); at != std::string::npos; at = w.err.find("U+2713", at + 1))
+    ++count;
+  EXPECT_EQ(count, 1U);
+}
+
 }  // namespace
 }  // namespace hlr::runtime

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "core/device/page_plot.hpp"
+#include "core/device/stroke_glyphs.hpp"
 
 namespace hlr {
 namespace {
@@ -20,6 +21,7 @@ using Strokes = std::vector<std::vector<Point2>>;
 // 'R'; the first pair is the left and right bearing; " R" lifts the pen; y grows down with the baseline
 // at +9) — independent of the library hlrscript reads it with. Glyph lines start at ' ' and follow ASCII.
 struct JhfGlyph {
+  int number = 0;  // the Hershey number
   int left = 0, right = 0;
   std::vector<std::vector<std::pair<int, int>>> strokes;
 };
@@ -34,6 +36,7 @@ std::map<char, JhfGlyph> read_jhf(const std::string& path) {
     const int pairs = std::stoi(record.substr(5, 3));
     if (static_cast<int>(record.size()) < 8 + 2 * pairs) continue;  // a glyph may continue on the next line
     JhfGlyph g;
+    g.number = std::stoi(record.substr(0, 5));
     g.left = record[8] - 'R';
     g.right = record[9] - 'R';
     g.strokes.emplace_back();
@@ -57,7 +60,7 @@ TEST(StrokeText, EveryPrintableLetterIsTheFontFilesGlyph) {
   ASSERT_EQ(jhf.size(), 96u);  // ' ' to DEL
   const double cap = 21;       // one font unit per mm
   for (const auto& [c, g] : jhf) {
-    if (c == 0x7f) continue;  // DEL is a control character, drawn as '?'
+    if (c == 0x7f) continue;  // DEL is a control character, drawn as a box
     SCOPED_TRACE(std::string(1, c));
     const Strokes got = stroke_text(std::string(1, c), {100, 50}, cap);
     ASSERT_EQ(got.size(), g.strokes.size());
@@ -83,11 +86,89 @@ TEST(StrokeText, LettersAdvanceAndScale) {
   EXPECT_NEAR(stroke_text_width_mm("HH", 2.1), 4.4, 1e-12);
 }
 
-TEST(StrokeText, NonAsciiAndControlBytesAreQuestionMarks) {
-  const Strokes q = stroke_text("?", {0, 0}, 3);
-  EXPECT_EQ(stroke_text("\xc3\xa9", {0, 0}, 3).size(), 2 * q.size());  // é in UTF-8: two bytes
-  EXPECT_EQ(stroke_text("\t", {0, 0}, 3), q);
-  EXPECT_TRUE(stroke_text("   ", {0, 0}, 3).empty());
+// Glyph `g` of a jhf file as stroke_text() would place it: baseline at the origin, y down, cap 21 mm.
+Strokes placed(const JhfGlyph& g) {
+  Strokes out;
+  for (const auto& s : g.strokes) {
+    std::vector<Point2>& t = out.emplace_back();
+    for (const auto& [x, y] : s) t.push_back({1.0 * (x - g.left), 1.0 * (y - 9)});
+  }
+  return out;
+}
+
+// Greek from Hershey's simplex Greek, by the Hershey numbers of its 24 capitals (527–550) and small
+// letters (627–650) in the alphabet's order, read from the font file by the test's own reader.
+TEST(StrokeText, GreekLettersAreTheSimplexGreekGlyphs) {
+  const std::map<char, JhfGlyph> jhf = read_jhf("/usr/share/hershey-fonts/greeks.jhf");
+  std::map<int, JhfGlyph> by_number;
+  for (const auto& [c, g] : jhf) by_number[g.number] = g;
+  const std::u32string capitals = U"ΑΒΓΔΕΖΗΘΙΚΛΜΝΞΟΠΡΣΤΥΦΧΨΩ", small = U"αβγδεζηθικλμνξοπρστυφχψω";
+  ASSERT_EQ(capitals.size(), 24u);
+  for (int k = 0; k < 24; ++k)
+    for (const auto& [letters, first] : {std::pair{capitals, 527}, std::pair{small, 627}}) {
+      const std::u32string one(1, letters[static_cast<std::size_t>(k)]);
+      std::string utf8;  // the letter in UTF-8 (two bytes: U+0391–U+03C9)
+      const auto c = static_cast<unsigned>(one[0]);
+      utf8 += static_cast<char>(0xc0 | (c >> 6));
+      utf8 += static_cast<char>(0x80 | (c & 0x3f));
+      SCOPED_TRACE(utf8);
+      ASSERT_TRUE(by_number.count(first + k));
+      EXPECT_EQ(stroke_text(utf8, {0, 0}, 21), placed(by_number[first + k]));
+    }
+  EXPECT_EQ(stroke_text("ς", {0, 0}, 21), stroke_text("σ", {0, 0}, 21));  // final sigma
+}
+
+double top_mm(const Strokes& s) {  // the highest point, page y down: the least y
+  double top = 1e9;
+  for (const auto& k : s)
+    for (const Point2& p : k) top = std::min(top, p.y);
+  return top;
+}
+
+// A letter with accents is its base letter, whole and at its advance, with each accent above it (or,
+// a cedilla, below the baseline); a superscript is its digit at 0.6 with its top at the cap height.
+TEST(StrokeText, AccentedLettersAreComposedFromTheirParts) {
+  const Strokes e = stroke_text("e", {0, 0}, 21), e_acute = stroke_text("é", {0, 0}, 21);
+  ASSERT_EQ(e_acute.size(), e.size() + 1);
+  EXPECT_TRUE(std::equal(e.begin(), e.end(), e_acute.begin()));
+  EXPECT_LT(top_mm({e_acute.back()}), top_mm(e) - 1);  // above the e
+  EXPECT_DOUBLE_EQ(stroke_text_width_mm("é", 21), stroke_text_width_mm("e", 21));
+  EXPECT_EQ(stroke_text("Ü", {0, 0}, 21).size(), stroke_text("U", {0, 0}, 21).size() + 2);  // two dots
+  const Strokes c_cedilla = stroke_text("ç", {0, 0}, 21);
+  double low = -1e9;
+  for (const Point2& p : c_cedilla.back()) low = std::max(low, p.y);
+  EXPECT_GT(low, 3);  // below the baseline
+  // í drops the dot of the i under its accent.
+  const Strokes i = stroke_text("i", {0, 0}, 21), dotless = stroke_text("ı", {0, 0}, 21);
+  ASSERT_EQ(dotless.size() + 1, i.size());
+  EXPECT_TRUE(missing_glyphs("ı").empty());
+  const Strokes i_acute = stroke_text("í", {0, 0}, 21);
+  ASSERT_EQ(i_acute.size(), dotless.size() + 1);
+  EXPECT_TRUE(std::equal(dotless.begin(), dotless.end(), i_acute.begin()));
+  const Strokes two = stroke_text("2", {0, 0}, 21), squared = stroke_text("²", {0, 0}, 21);
+  ASSERT_EQ(squared.size(), two.size());
+  EXPECT_NEAR(top_mm(squared), -21, 0.6 * 1 + 1e-9);
+  EXPECT_NEAR(stroke_text_width_mm("²", 21), 0.6 * stroke_text_width_mm("2", 21), 1e-12);
+  EXPECT_EQ(stroke_text("µ", {0, 0}, 21), stroke_text("μ", {0, 0}, 21));  // micro sign: the Greek mu
+  EXPECT_EQ(stroke_text("½", {0, 0}, 21).size(), stroke_text("1/2", {0, 0}, 21).size());
+  for (const char* made : {"ß", "°", "ø", "Ł", "æ", "…", "“"})
+    EXPECT_TRUE(missing_glyphs(made).empty()) << made;
+}
+
+// A character no font holds, an ill-formed byte and a control character are each drawn as a box (a
+// closed rectangle), and named once by missing_glyphs().
+TEST(StrokeText, MissingCharactersAreBoxesAndNamed) {
+  const Strokes box = stroke_text("✓", {0, 0}, 21);
+  ASSERT_EQ(box.size(), 1u);
+  EXPECT_EQ(box[0].size(), 5u);
+  EXPECT_EQ(box[0].front(), box[0].back());
+  EXPECT_EQ(stroke_text("\xff", {0, 0}, 21), box);
+  EXPECT_EQ(stroke_text("\t", {0, 0}, 21), box);
+  EXPECT_EQ(missing_glyphs("Größe ✓ 1 ✓ ☃"), U"✓☃");
+  EXPECT_TRUE(missing_glyphs("Größe 1 m³, 20 °C, Ωμ").empty());
+  EXPECT_EQ(describe_code_point(U'✓'), "U+2713 '✓'");
+  EXPECT_EQ(describe_code_point(U'\t'), "U+0009");
+  EXPECT_EQ(decode_utf8("a\xffé"), U"a\ufffdé");
 }
 
 // The caption planned with the drawing: in the bottom margin, inside the pen's reach, in pen 1, and no
