@@ -217,6 +217,32 @@ Diagnostic to_diagnostic(const detail::SyntaxError& error, const SourceFile& fil
   } else {
     at_found();
   }
+  // `f(sides=12)`, `paper A4 (margin=10)`: a name then '=' where an argument list goes on — Python's and
+  // OpenSCAD's way of naming an argument.
+  if (error.opened_at && error.opener == '(' && !next_line && found < text.size() && text[found] == '=' &&
+      text.substr(found, 2) != "==") {
+    std::size_t name_end = found;
+    while (name_end > stmt_begin && (text[name_end - 1] == ' ' || text[name_end - 1] == '\t')) --name_end;
+    std::size_t name_begin = name_end;
+    while (name_begin > stmt_begin &&
+           (std::isalnum(static_cast<unsigned char>(text[name_begin - 1])) || text[name_begin - 1] == '_'))
+      --name_begin;
+    if (name_begin < name_end && !std::isdigit(static_cast<unsigned char>(text[name_begin]))) {
+      const std::string name(text.substr(name_begin, name_end - name_begin));
+      // The value as written, up to the next ',' or ')' outside brackets, for the hint.
+      std::size_t v = skip_padding(text, found + 1), end = v;
+      for (int depth = 0; end < text.size() && text[end] != '\n' && end - v < 40; ++end) {
+        const char c = text[end];
+        if (depth == 0 && (c == ',' || c == ')')) break;
+        depth += c == '(' || c == '[' ? 1 : c == ')' || c == ']' ? -1 : 0;
+      }
+      while (end > v && (text[end - 1] == ' ' || text[end - 1] == '\t')) --end;
+      const std::string value = end > v ? std::string(text.substr(v, end - v)) : "...";
+      d.message = "a named argument takes ':', not '='";
+      d.hint = "write '" + name + ": " + value + "' ('==' compares)";
+      return d;
+    }
+  }
   if (error.opened_at) {
     const auto open = static_cast<std::size_t>(error.opened_at - text.data());
     const SourcePos where = file.position(open);

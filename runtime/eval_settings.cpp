@@ -1,11 +1,13 @@
 // Settings statements (animate, output, style) and include; paper, pen and plotter are in
 // eval_devices.cpp. Each setting may be given once per evaluation; a second one is an error pointing at
 // the first, so two files cannot silently disagree.
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <tuple>
+#include <vector>
 
 #include "core/format_number.hpp"
 #include "runtime/eval_detail.hpp"
@@ -137,10 +139,27 @@ void Evaluator::exec_include(const lang::IncludeStmt& include, const ScopePtr& s
     lang::Diagnostic d;
     d.span = include.path_span;
     d.message = error;
-    d.hint = library ? "library modules live in " + stdlib_module_directory().string() +
-                           " (HLRSCRIPT_STDLIB overrides it)"
-                     : "include paths are relative to the including file ('" +
-                           (from ? from->source->name() : "") + "')";
+    if (library) {
+      // The modules there, as an include names them, and the likeliest one.
+      std::vector<std::string> modules;
+      std::error_code ec;
+      for (const auto& e : std::filesystem::directory_iterator(stdlib_module_directory(), ec))
+        if (e.path().extension() == ".hls") modules.push_back("std/" + e.path().filename().string());
+      std::sort(modules.begin(), modules.end());
+      const std::string guess = did_you_mean(include.path, modules);
+      std::error_code missing;
+      if (!std::filesystem::exists(target, missing))
+        d.message = "no library module '" + include.path + "'" + (guess.empty() ? "" : " (" + guess + ")");
+      std::string list;
+      for (const std::string& m : modules) list += (list.empty() ? "" : ", ") + m;
+      d.hint = (modules.empty()
+                    ? "no library modules in " + stdlib_module_directory().string()
+                    : "the library modules: " + list + " (in " + stdlib_module_directory().string() + ")") +
+               "; HLRSCRIPT_STDLIB overrides the folder";
+    } else {
+      d.hint =
+          "include paths are relative to the including file ('" + (from ? from->source->name() : "") + "')";
+    }
     throw EvalError(std::move(d), ErrorKind::Input);
   }
   if (!entry->script) throw EvalError(entry->diagnostics, ErrorKind::Script, "syntax errors in " + shown);

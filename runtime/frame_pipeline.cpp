@@ -15,7 +15,9 @@
 #include <thread>
 #include <tuple>
 
+#include "core/format_number.hpp"
 #include "core/hlr/render_frame.hpp"
+#include "core/hlr/view_checks.hpp"
 #include "runtime/eval_error.hpp"
 #include "runtime/frame_labels.hpp"
 #include "runtime/interrupt.hpp"
@@ -42,8 +44,36 @@ struct FrameJob {
   std::shared_ptr<const Device> device;
   EncodedFrame encoded;
   std::vector<lang::Diagnostic> warnings;
+  std::vector<lang::Diagnostic> view_warnings;  // about this frame's view: said once for all the frames
   std::exception_ptr error;
 };
+
+// Warnings about the view (core/hlr/view_checks.hpp), at the camera's statement.
+void warn_about_view(const FrameScene& scene, const NamedCamera& named, const Camera& camera,
+                     std::vector<lang::Diagnostic>& out) {
+  const ViewProblems p = check_view(scene.scene, camera);
+  if (p.eye_inside) {
+    lang::Diagnostic d;
+    d.severity = lang::Severity::Warning;
+    d.span = named.span;
+    d.message = "camera '" + named.name + "': the eye is inside the closed solid '" +
+                scene.scene.objects[*p.eye_inside].name + "', so the drawing shows it from inside";
+    d.hint =
+        "move the eye out of the solid (or look at it as an open surface, without the faces near the eye)";
+    out.push_back(std::move(d));
+  }
+  if (p.near_plane_cuts_most()) {
+    lang::Diagnostic d;
+    d.severity = lang::Severity::Warning;
+    d.span = named.span;
+    d.message = "camera '" + named.name + "': the near plane (depth " +
+                format_for_message(camera.near_depth) +
+                ") cuts away most of what lies in front of the eye (" + std::to_string(p.vertices_cut_away) +
+                " of " + std::to_string(p.vertices_in_front) + " vertices)";
+    d.hint = "give the camera a smaller near: depth, or move the eye back";
+    out.push_back(std::move(d));
+  }
+}
 
 // Everything one frame needs, from the script to the bytes for its file.
 void run_frame(const Program& program, int frame, double fps, const PipelineOptions& options,
@@ -116,6 +146,7 @@ void run_frame(const Program& program, int frame, double fps, const PipelineOpti
     settings.plot.extent = extent;
   }
   r.render_seconds = seconds_since(start);
+  warn_about_view(scene, *settings.camera, camera, job.view_warnings);
   // Each piece costs the plan and the device more than the engine: a runaway count stops here.
   if (result.segments.size() > limits.segments)
     fail(settings.camera->span,
@@ -256,6 +287,17 @@ class FrameSink {
     }
     if (!failures_.empty()) keep_whole_files_and_throw();
     for (const auto& f : files_) f->commit();
+    // Each view warning once, with the frames it holds for (frames arrive in order).
+    for (const std::string& key : view_order_) {
+      ViewWarning& v = view_warnings_[key];
+      const bool run = v.last - v.first + 1 == v.frames;
+      v.warning.message += v.frames == 1 ? " (frame " + std::to_string(v.first) + ")"
+                           : run
+                               ? " (frames " + std::to_string(v.first) + " to " + std::to_string(v.last) + ")"
+                               : " (" + std::to_string(v.frames) + " frames, from frame " +
+                                     std::to_string(v.first) + " to " + std::to_string(v.last) + ")";
+      result_.warnings.push_back(std::move(v.warning));
+    }
     return std::move(result_);
   }
 
@@ -364,6 +406,15 @@ class FrameSink {
     for (lang::Diagnostic& w : job.warnings)
       if (seen_.emplace(w.span.file, w.span.begin, w.span.end, w.message).second)
         result_.warnings.push_back(std::move(w));
+    for (lang::Diagnostic& w : job.view_warnings) {
+      ViewWarning& v = view_warnings_[w.message];
+      if (v.frames++ == 0) {
+        v.first = frame;
+        v.warning = std::move(w);
+        view_order_.push_back(v.warning.message);
+      }
+      v.last = frame;
+    }
     ++result_.frame_count;
     done_.push_back(frame);
     done_file_.push_back(index);
@@ -379,6 +430,12 @@ class FrameSink {
   std::vector<std::unique_ptr<StagedFile>> files_;
   std::vector<int> first_frames_;
   std::set<std::tuple<lang::FileId, std::uint32_t, std::uint32_t, std::string>> seen_;
+  struct ViewWarning {
+    lang::Diagnostic warning;
+    int first = 0, last = 0, frames = 0;
+  };
+  std::map<std::string, ViewWarning> view_warnings_;  // by message
+  std::vector<std::string> view_order_;               // the messages in the order first met
   std::vector<FramesFailed::Failure> failures_;
   std::set<fs::path> failed_targets_;  // files a failed frame went to, where known
   bool unknown_target_ = false;        // a failed frame whose file is not known

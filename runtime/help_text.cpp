@@ -1,8 +1,13 @@
 #include "runtime/help_text.hpp"
 
 #include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
 
+#include "lang/parser.hpp"
 #include "runtime/builtins.hpp"
+#include "runtime/file_access.hpp"
 #include "runtime/format_value.hpp"
 
 namespace hlr::runtime {
@@ -75,6 +80,64 @@ std::string builtin_help(const std::string& name, const BuiltinFunction& f) {
   return out;
 }
 
+// ---- the library modules' functions ------------------------------------------------------------------
+
+struct ModuleFunction {
+  std::string module;     // "std/gears.hls"
+  std::string signature;  // "gear(teeth, m, thickness, bore = 0, key = true)"
+  std::string doc;        // the comment lines right above the def, without '#'
+};
+
+// Every top-level def of the library modules, read from their files (in stdlib_module_directory()).
+std::vector<ModuleFunction> module_functions() {
+  std::vector<ModuleFunction> out;
+  std::vector<std::filesystem::path> files;
+  std::error_code ec;
+  for (const auto& e : std::filesystem::directory_iterator(stdlib_module_directory(), ec))
+    if (e.path().extension() == ".hls") files.push_back(e.path());
+  std::sort(files.begin(), files.end());
+  for (const std::filesystem::path& file : files) {
+    std::ifstream in(file, std::ios::binary);
+    std::ostringstream text;
+    text << in.rdbuf();
+    const std::string module = "std/" + file.filename().string();
+    const lang::ParseResult parsed = lang::parse(text.str(), module);
+    if (!parsed.ok()) continue;
+    const std::string& t = parsed.source->text();
+    for (const lang::Stmt& stmt : parsed.script->statements) {
+      const auto* def = std::get_if<lang::DefStmt>(&stmt.node);
+      if (!def) continue;
+      // The signature as written: from the name to its parameter list's ')'.
+      const std::size_t name_at = def->name.span.begin;
+      std::size_t close = t.find('(', name_at);
+      for (int depth = 0; close < t.size(); ++close) {
+        depth += t[close] == '(' ? 1 : t[close] == ')' ? -1 : 0;
+        if (depth == 0) break;
+      }
+      ModuleFunction f{module, t.substr(name_at, close + 1 - name_at), ""};
+      // The comment block right above the def's line.
+      std::size_t line_start = t.rfind('\n', stmt.span.begin == 0 ? 0 : stmt.span.begin - 1);
+      std::vector<std::string> lines;
+      while (line_start != std::string::npos && line_start > 0) {
+        const std::size_t prev = t.rfind('\n', line_start - 1);
+        const std::size_t begin = prev == std::string::npos ? 0 : prev + 1;
+        std::string line = t.substr(begin, line_start - begin);
+        line.erase(0, line.find_first_not_of(" \t"));
+        if (line.empty() || line[0] != '#') break;
+        lines.push_back(line.substr(line.size() > 1 && line[1] == ' ' ? 2 : 1));
+        if (prev == std::string::npos) break;
+        line_start = prev;
+      }
+      std::reverse(lines.begin(), lines.end());
+      for (const std::string& l : lines) f.doc += "  " + l + "\n";
+      out.push_back(std::move(f));
+    }
+  }
+  return out;
+}
+
+std::string function_name(const ModuleFunction& f) { return f.signature.substr(0, f.signature.find('(')); }
+
 }  // namespace
 
 std::optional<std::string> language_help(const std::string& topic) {
@@ -84,12 +147,17 @@ std::optional<std::string> language_help(const std::string& topic) {
   if (v && !v->is(ValueKind::Function))
     return topic + " = " + display(*v, kShownValueLength) + " (a built-in constant)\n";
   if (const BuiltinFunction* f = builtin_function(topic)) return builtin_help(topic, *f);
+  for (const ModuleFunction& f : module_functions())
+    if (function_name(f) == topic)
+      return f.signature + "   (library module " + f.module + ": include \"" + f.module + "\" first)\n" +
+             f.doc;
   return std::nullopt;
 }
 
 std::vector<std::string> language_help_topics() {
   std::vector<std::string> out = builtins().names();
   for (const StatementHelp& s : kStatements) out.push_back(s.keyword);
+  for (const ModuleFunction& f : module_functions()) out.push_back(function_name(f));
   std::sort(out.begin(), out.end());
   return out;
 }

@@ -21,11 +21,17 @@ using lang::BinaryOp;
     hint = "vectors multiply with dot(a, b) or cross(a, b)";
   else if (a.is(ValueKind::String) || b.is(ValueKind::String))
     hint = "to put a value into text, interpolate it: \"width {w}\"";
+  else if (a.is(ValueKind::Transform) && b.is(ValueKind::Transform))
+    hint =
+        "transforms compose with 'then', which applies the left one first: 'rotate(z: 30) then "
+        "translate(1, 0, 0)'";
   else if (bin.op == BinaryOp::Then)
     hint = "'then' chains transforms: translate(1, 0, 0) then rotate(z: 30)";
   else if (a.is(ValueKind::Number) && b.is(ValueKind::Vector) && bin.op == BinaryOp::Div)
     hint = "a vector can be divided by a number, not the other way round";
   const bool compare = bin.op >= BinaryOp::Eq && bin.op <= BinaryOp::Ge;
+  if (!compare && a.is(ValueKind::Transform) && b.is(ValueKind::Transform))
+    fail(bin.op_span, "cannot apply '" + op + "' to two transforms: transforms compose with 'then'", hint);
   fail(bin.op_span,
        compare ? "cannot compare " + kind_with_article(a.kind()) + " with " + kind_with_article(b.kind()) +
                      " using '" + op + "'"

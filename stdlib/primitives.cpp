@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -11,6 +12,7 @@
 #include "core/solid/solid_builder.hpp"
 #include "stdlib/generator_detail.hpp"
 #include "stdlib/generators.hpp"
+#include "stdlib/shapes.hpp"
 
 namespace hlr::stdlib {
 
@@ -34,6 +36,16 @@ Solid extrude(std::vector<Point2> outer, std::vector<std::vector<Point2>> holes,
   require(outer.size() >= 3, "prism", "the polygon needs at least 3 corners");
   require(w0 < w1, "prism", "z0 must be below z1");
   require(worldFromLocal.determinant() > 0, "prism", "the placement must not mirror");
+  {  // A self-crossing (bow-tie) outline, or a hole crossing it, said as such, by the points as given.
+    std::vector<std::vector<Point2>> given = {outer};
+    std::vector<std::string> names = {"outline"};
+    for (std::size_t k = 0; k < holes.size(); ++k) {
+      given.push_back(holes[k]);
+      names.push_back("hole " + std::to_string(k));
+    }
+    if (const std::optional<RingDefect> defect = find_ring_defect(given))
+      require(false, "prism", describe_ring_defect(*defect, names, given));
+  }
   // Orientation as seen from +w: outer counter-clockwise, holes clockwise.
   if (signed_area2(outer) < 0) std::reverse(outer.begin(), outer.end());
   for (auto& h : holes) {
@@ -177,8 +189,9 @@ Solid l_block(Point3 origin, Vector3 size, double upright_width, double foot_hei
   require(foot_height > 0 && foot_height < size.z, "l_block", "foot_height must lie in (0, size.z)");
   // Outline in (u, v) = (x, z); extrusion w maps to −y, so (u, v, w) → (u, −w, v) keeps the handedness;
   // the translation puts w = 0 at y = origin.y + size.y.
-  const std::vector<Point2> outline = {{0, 0},           {size.x, 0},           {size.x, foot_height},
-                                       {upright_width, foot_height}, {upright_width, size.z}, {0, size.z}};
+  const std::vector<Point2> outline = {
+      {0, 0},     {size.x, 0}, {size.x, foot_height}, {upright_width, foot_height}, {upright_width, size.z},
+      {0, size.z}};
   const Affine3 frame =
       Affine3::from_rows({1, 0, 0}, {0, 0, -1}, {0, 1, 0}, {origin.x, origin.y + size.y, origin.z});
   return detail::extrude(outline, {}, 0, size.y, frame);
@@ -204,7 +217,8 @@ Solid cylinder(Point3 base_center, double radius, double height, int sides, doub
                          base_center.z + height, Affine3::identity(), crease_angle_deg);
 }
 
-Solid plate_with_holes(Point3 min, Point3 max, int holes_x, int holes_y, double hole_fraction, int hole_sides) {
+Solid plate_with_holes(Point3 min, Point3 max, int holes_x, int holes_y, double hole_fraction,
+                       int hole_sides) {
   require_box(min, max, "plate_with_holes");
   require(holes_x >= 0 && holes_y >= 0, "plate_with_holes", "hole counts must not be negative");
   require(hole_fraction > 0 && hole_fraction < 1, "plate_with_holes", "hole_fraction must lie in (0, 1)");

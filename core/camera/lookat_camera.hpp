@@ -15,8 +15,9 @@ struct LookatParameters {
   Point3 eye;
   Point3 target;
   Vector3 up{0, 0, 1};
-  double fov_deg = 40;  // vertical field of view: the picture spans [−1, 1] vertically
-  double aspect = 0;    // > 0: frame [−aspect, aspect] × [−1, 1]; 0: no frame clip
+  double fov_deg = 40;  // the field of view across the picture's [−1, 1]: the page's shorter side, or
+                        // the frame's height with an aspect
+  double aspect = 0;    // > 0: frame [−aspect, aspect] × [−1, 1]; 0: the page's (page_layout.hpp)
   double near = 0;      // near-plane depth; 0: Tolerance::kLookatNearFraction·|target − eye|
 };
 

@@ -252,5 +252,34 @@ TEST(CameraFraming, AnUnknownFitIsRefusedAtTheOption) {
   EXPECT_NE(cli.err.find("--fit takes 'camera' or 'drawing'"), std::string::npos) << cli.err;
 }
 
+// A view that draws nonsense though the script is valid gets one warning, at the camera, naming the
+// frames: the eye inside a closed solid; a near plane that cuts away most of what is in front of the eye.
+TEST(CameraFraming, ViewsThatDrawNonsenseAreWarnedOnce) {
+  const hlr::test::TempDir dir(current_test_name());
+  const std::string inside = dir.write("inside.hls",
+                                       "animate frames 4\n"
+                                       "draw box(10, 10, 10) at translate(-5, -5, -5)\n"
+                                       "camera c = lookat(eye: (frame, 0, 0), target: (5, 1, 0))\n")
+                                 .string();
+  const test::CliResult r = test::run({inside, "-o", (dir.path() / "inside.json").string()});
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(
+      r.err.find("inside.hls:3:1: warning: camera 'c': the eye is inside the closed solid 'box', so the "
+                 "drawing shows it from inside (frames 0 to 3)"),
+      std::string::npos)
+      << r.err;
+  EXPECT_EQ(r.err.find("warning", r.err.find("warning") + 1), std::string::npos) << r.err;  // once
+  const std::string near = dir.write("near.hls",
+                                     "draw box(10, 10, 10)\n"
+                                     "camera c = lookat(eye: (-20, 5, 5), target: (0, 5, 5), near: 35)\n")
+                               .string();
+  const test::CliResult n = test::run({near, "-o", (dir.path() / "near.json").string()});
+  ASSERT_EQ(n.code, 0) << n.err;
+  EXPECT_NE(n.err.find("near.hls:2:1: warning: camera 'c': the near plane (depth 35) cuts away most of what "
+                       "lies in front of the eye (8 of 8 vertices) (frame 0)"),
+            std::string::npos)
+      << n.err;
+}
+
 }  // namespace
 }  // namespace hlr::runtime

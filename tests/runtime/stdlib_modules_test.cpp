@@ -2,6 +2,7 @@
 // its functions build what they promise; a missing module is an input error that says where modules live.
 #include <gtest/gtest.h>
 
+#include "tests/runtime/cli_run.hpp"
 #include "tests/runtime/runtime_test_support.hpp"
 
 namespace hlr::runtime {
@@ -39,9 +40,28 @@ TEST(StdlibModules, MissingModuleSaysWhereModulesLive) {
     EXPECT_EQ(e.kind, ErrorKind::Input);
     ASSERT_FALSE(e.diagnostics.empty());
     EXPECT_EQ(test::line_col(e.diagnostics[0], program->sources()).substr(0, 4), "1:9:");
-    EXPECT_NE(e.diagnostics[0].hint.find("library modules live in"), std::string::npos)
+    EXPECT_NE(e.diagnostics[0].hint.find("the library modules: std/buildings.hls, std/fasteners.hls, "
+                                         "std/gears.hls (in "),
+              std::string::npos)
         << e.diagnostics[0].hint;
   }
+}
+
+// `hlrscript help NAME` knows the modules' functions: the signature as written, the module to include and
+// the comment above the def; a misspelt one gets a "did you mean".
+TEST(StdlibModules, HelpKnowsTheModulesFunctions) {
+  const test::CliResult gear = test::run({"help", "gear"});
+  EXPECT_EQ(gear.code, 0) << gear.err;
+  EXPECT_EQ(gear.out.rfind("gear(teeth, m, thickness, bore = 0, key = true)   (library module std/gears.hls: "
+                           "include \"std/gears.hls\" first)\n  A gear of `teeth` teeth",
+                           0),
+            0U)
+      << gear.out;
+  const test::CliResult nut = test::run({"help", "hex_nut"});
+  EXPECT_NE(nut.out.find("std/fasteners.hls"), std::string::npos) << nut.out;
+  const test::CliResult typo = test::run({"help", "gearz"});
+  EXPECT_NE(typo.code, 0);
+  EXPECT_NE(typo.err.find("did you mean 'gear'?"), std::string::npos) << typo.err;
 }
 
 }  // namespace
