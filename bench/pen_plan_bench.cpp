@@ -102,7 +102,7 @@ void plan(benchmark::State& state, const char* kind, hlr::PenOrder order, int th
       in.greedy_pen_up_mm = hlr::plan_pen_strokes(in.pieces, g).stats.pen_up_mm;
     }
     state.counters["vs_greedy"] = in.greedy_pen_up_mm > 0 ? st.pen_up_mm / in.greedy_pen_up_mm : 1.0;
-    state.counters["budget_hit"] = st.budget_exhausted ? 1 : 0;
+    state.counters["effort_capped"] = st.effort_exhausted ? 1 : 0;
   }
 }
 

@@ -45,7 +45,7 @@ _hlrscript() {
     --limit) COMPREPLY=($(compgen -W "steps= faces= vertices= segments= memory= calls= list= string=" -- "$cur"))
       compopt -o nospace 2>/dev/null; return ;;
     --allow-path|--out-dir) COMPREPLY=($(compgen -d -- "$cur")); return ;;
-    --frames|--shard|--jobs|-j|--margin|--scale|--dash|--dpi|--line-width|--step|--plan-budget|--frame-timeout)
+    --frames|--shard|--jobs|-j|--margin|--scale|--dash|--dpi|--line-width|--step|--plan-effort|--frame-timeout)
       return ;;  # a number or a range: nothing to offer
   esac
   if [[ $cur == -* ]]; then

@@ -88,8 +88,9 @@ po::options_description visible_options() {
        "of camera, layout, segments, strokes, stats")  //
       ("pen-order", po::value<std::string>()->value_name("none|greedy|optimized"),
        "pen planning: file order, greedy nearest-end, or optimized (default)")  //
-      ("plan-budget", po::value<std::string>()->value_name("MS"),
-       "time budget of the optimized pen plan per frame (default 200 ms)")  //
+      ("plan-effort", po::value<std::string>()->value_name("N"),
+       "improvement work of the optimized pen plan per stroke (default 500; 0: the circuit order): counted, "
+       "never timed, so reruns give the same bytes")  //
       ("allow-path", po::value<std::vector<std::string>>()->value_name("DIR")->composing(),
        "let the script include and import files below DIR too (repeatable); by default it reads only below "
        "its own folder and the library modules")  //
@@ -211,9 +212,15 @@ bool parse_device_options(const po::variables_map& vm, DeviceOptions& d, std::st
   std::optional<double> step;
   if (!number_option(vm, "step", kMinPlotterStepMm, kMaxPlotterStepMm, step, error)) return false;
   if (step) d.step_mm = *step;
-  std::optional<double> budget;
-  if (!number_option(vm, "plan-budget", 0, 600000, budget, error)) return false;
-  if (budget) d.plan_budget_ms = *budget;
+  std::optional<double> effort;
+  if (!number_option(vm, "plan-effort", 0, static_cast<double>(kMaxPlanEffort), effort, error)) return false;
+  if (effort) {
+    if (*effort != std::floor(*effort)) {
+      error = "--plan-effort " + vm["plan-effort"].as<std::string>() + ": expected a whole number";
+      return false;
+    }
+    d.plan_effort = static_cast<std::size_t>(*effort);
+  }
   if (vm.count("plotter")) d.plotter = vm["plotter"].as<std::string>();
   d.clip = vm.count("clip") > 0;
   d.decorations = vm.count("plain") == 0;

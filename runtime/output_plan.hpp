@@ -70,7 +70,7 @@ struct DeviceOptions {
   std::optional<bool> relative;              // --hpgl-moves relative|absolute
   PenOrder pen_order = PenOrder::Optimized;  // --pen-order
   JsonParts json_parts;                      // --json: what each JSON frame holds
-  double plan_budget_ms = 200;               // --plan-budget (per frame, Optimized only)
+  std::size_t plan_effort = kDefaultPlanEffort;  // --plan-effort (work per stroke, Optimized only)
   std::string creation_date;                 // PDF metadata: SOURCE_DATE_EPOCH when set, else now
 };
 

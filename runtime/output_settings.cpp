@@ -260,7 +260,7 @@ void resolve_device(const FrameScene& scene, const RunSettings& run, FrameSettin
   }
   s.camera_on_page = framed_camera(s.camera->camera, plot.spec);
   plot.plan.order = run.device.pen_order;
-  plot.plan.time_budget_ms = run.device.plan_budget_ms;
+  plot.plan.effort = run.device.plan_effort;
   plot.plan.grid_mm = planning.grid_mm;
   plot.plan.home = planning.home;
   plot.plan.speeds = planning.speeds;

@@ -76,7 +76,7 @@ struct Sequence {
   std::vector<GroupStrokes> groups;
   double travel = 0;  // grid units
   std::size_t moves = 0;
-  bool deadline_hit = false;
+  bool capped = false;
 };
 
 // `neighbours`: the matching's neighbour lists over g.odd, as long as improve_order() will read them when
@@ -96,9 +96,9 @@ std::vector<plan::VertexPair> matched_pairing(const PenGraph& g, std::vector<std
   return pairs;
 }
 
-// `budget` (Optimized): clock time left for the improvement passes, shared by the groups in turn. `threads`
-// as for parallel_chunks (the same sequence for any value).
-Sequence plan_sequence(const std::vector<Group>& groups, Pt home, bool optimize, Clock::duration budget,
+// `effort` (Optimized): the improvement passes' work per stroke of each group. `threads` as for
+// parallel_chunks (the same sequence for any value).
+Sequence plan_sequence(const std::vector<Group>& groups, Pt home, bool optimize, std::size_t effort,
                        unsigned threads) {
   Sequence out;
   Pt here = home;
@@ -119,13 +119,10 @@ Sequence plan_sequence(const std::vector<Group>& groups, Pt home, bool optimize,
         gs.strokes = std::move(other);
     } else {
       plan::order_circuits(gs.strokes, g.vertices, ends);
-      const Clock::time_point started = Clock::now();
       const plan::SharedNeighbours shared{&g.odd, &neighbours, shared_list_length(g)};
-      const plan::ImproveResult r =
-          plan::improve_order(gs.strokes, g.vertices, ends, started + budget, 500, &shared);
-      budget -= std::min(budget, Clock::now() - started);
+      const plan::ImproveResult r = plan::improve_order(gs.strokes, g.vertices, ends, effort, &shared);
       out.moves += r.moves;
-      out.deadline_hit = out.deadline_hit || r.deadline_hit;
+      out.capped = out.capped || r.capped;
     }
     out.travel += plan::tour_travel(gs.strokes, g.vertices, ends);
     if (!gs.strokes.empty()) {
@@ -238,20 +235,16 @@ PenPlan plan_pen_strokes(const std::vector<PlotPiece>& pieces, const PlanOptions
   if (options.order == PenOrder::None) {
     file_order_strokes(groups, grid, plan.strokes);
   } else {
-    // The budget bounds the improvement passes only (PlanOptions::time_budget_ms); at most a day.
-    const double budget_ms =
-        std::isnan(options.time_budget_ms) ? 0.0 : std::clamp(options.time_budget_ms, 0.0, 864e5);
-    const auto budget =
-        std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double, std::milli>(budget_ms));
+    const std::size_t effort = std::min(options.effort, kMaxPlanEffort);
     Sequence chosen;
     if (options.order == PenOrder::Optimized) {
       // The greedy plan, for the never-worse-than-Greedy guarantee on small drawings (where the matching
       // and the local search have least to work with): built beside the optimized one when allowed (as a
       // task of the caller's arena).
       Sequence optimized;
-      auto best = [&] { optimized = plan_sequence(groups, home, true, budget, threads); };
+      auto best = [&] { optimized = plan_sequence(groups, home, true, effort, threads); };
       if (st.merged_pieces <= kGreedyCheckEdges) {
-        auto greedy = [&] { chosen = plan_sequence(groups, home, false, budget, 1); };
+        auto greedy = [&] { chosen = plan_sequence(groups, home, false, effort, 1); };
         if (options.threads >= 2) {
           tbb::parallel_invoke(greedy, best);
         } else {
@@ -262,13 +255,13 @@ PenPlan plan_pen_strokes(const std::vector<PlotPiece>& pieces, const PlanOptions
         best();
       }
       st.improvement_moves = optimized.moves;
-      st.budget_exhausted = optimized.deadline_hit;
+      st.effort_exhausted = optimized.capped;
       if (st.merged_pieces > kGreedyCheckEdges || optimized.travel <= chosen.travel)
         chosen = std::move(optimized);
       else
         st.kept_greedy = true;
     } else {
-      chosen = plan_sequence(groups, home, false, budget, threads);
+      chosen = plan_sequence(groups, home, false, effort, threads);
     }
     emit_strokes(groups, chosen, grid, plan.strokes);
   }

@@ -9,8 +9,8 @@
 #include <cstddef>
 #include <vector>
 
-#include "core/plan/plot_stroke.hpp"
 #include "core/geometry/vector.hpp"
+#include "core/plan/plot_stroke.hpp"
 
 namespace hlr {
 
@@ -25,9 +25,9 @@ enum class PenOrder {
   None,       // file order: pieces as given, a piece starting where the previous ended continues its stroke
   Greedy,     // Euler strokes, then nearest-endpoint ordering with reversal
   Optimized,  // Euler strokes with matched odd vertices, drawn circuit by circuit, then 2-opt / Or-opt
-              // within the budget; never more pen-up travel than Greedy on drawings of up to
-              // kGreedyCheckEdges graph edges (both are built, the better kept); beyond that size the
-              // greedy plan costs as much as the rest of planning and loses clearly (0.45–0.7× its pen-up
+              // within the work cap (PlanOptions::effort); never more pen-up travel than Greedy on drawings
+              // of up to kGreedyCheckEdges graph edges (both are built, the better kept); beyond that size
+              // the greedy plan costs as much as the rest of planning and loses clearly (0.45–0.7× its pen-up
               // on every bench/ scene), so it is not built
 };
 
@@ -41,11 +41,18 @@ struct PlotterSpeeds {
   double lift_s = 0.1;  // one pen-up plus pen-down
 };
 
+// The improvement work per stroke by default, and the most --plan-effort takes.
+inline constexpr std::size_t kDefaultPlanEffort = 500;
+inline constexpr std::size_t kMaxPlanEffort = 100000;
+
 struct PlanOptions {
   PenOrder order = PenOrder::Optimized;
-  double grid_mm = 0.025;       // endpoints snap to multiples of this (the device's plotter unit)
-  Point2 home{0, 0};            // the pen starts here and returns here (page mm)
-  double time_budget_ms = 200;  // for the improvement passes of Optimized, per page
+  double grid_mm = 0.025;  // endpoints snap to multiples of this (the device's plotter unit)
+  Point2 home{0, 0};       // the pen starts here and returns here (page mm)
+  // Optimized: the improvement passes' work per stroke (candidate moves evaluated plus tour positions
+  // rewritten; core/plan/stroke_order.hpp). Counted in work, never in time, so that the plan depends only
+  // on the pieces and the options; 0 keeps the circuit order.
+  std::size_t effort = kDefaultPlanEffort;
   PlotterSpeeds speeds;
   // A piece is split at (joined to) every vertex exactly on it between its end points, and at every loose
   // end (a vertex where a single piece ends) within this many grid units of it: T-junctions that snapping
@@ -74,7 +81,7 @@ struct PlanStats {
   std::size_t odd_vertices = 0;
   std::size_t improvement_moves = 0;  // Optimized: improving 2-opt / Or-opt / re-entry moves applied
   bool kept_greedy = false;           // Optimized: the greedy plan was built, was shorter and was kept
-  bool budget_exhausted = false;      // Optimized: the clock (time_budget_ms) stopped the improvement
+  bool effort_exhausted = false;      // Optimized: the work cap (PlanOptions::effort) stopped the improvement
   // Hidden strokes cut into pen-down dashes for a plotter (core/plan/hidden_dashes.hpp): the dashes drawn,
   // each a lift of its own, counted in `lifts` (lift_lower_bound stays the undashed drawing's).
   std::size_t hidden_dashes = 0;
@@ -94,8 +101,8 @@ struct PenPlan {
 // Optimized pairs the odd vertices of each pen and layer by a minimum-weight matching (exact up to 16 of
 // them; greedy plus exchanges beyond), follows the augmented Euler circuits so that the pen-up moves are
 // the matched pairs, links the circuits nearest first, and improves the order with 2-opt and Or-opt;
-// groups of up to 10 strokes are ordered exactly instead. It is deterministic unless time_budget_ms runs
-// out first (stats.budget_exhausted); its work is otherwise capped in proportion to the stroke count.
+// groups of up to 10 strokes are ordered exactly instead. Its work is capped in proportion to the stroke
+// count (PlanOptions::effort), never by the clock: the plan is the same on an idle and a loaded machine.
 PenPlan plan_pen_strokes(const std::vector<PlotPiece>& pieces, const PlanOptions& options = {});
 
 // Sets the figures of what `strokes` draw: lifts, pen_down_mm, the pen-up moves from options.home through

@@ -21,14 +21,8 @@ Pt at(const std::vector<GridPoint>& vertices, std::uint32_t v) {
 class TourImprover {
  public:
   TourImprover(std::vector<GridStroke>& strokes, const std::vector<GridPoint>& vertices, const TourEnds& ends,
-               std::chrono::steady_clock::time_point deadline, std::size_t work_cap,
-               const SharedNeighbours* shared)
-      : strokes_(strokes),
-        vertices_(vertices),
-        ends_(ends),
-        deadline_(deadline),
-        work_cap_(work_cap),
-        shared_(shared) {
+               std::size_t work_cap, const SharedNeighbours* shared)
+      : strokes_(strokes), vertices_(vertices), ends_(ends), work_cap_(work_cap), shared_(shared) {
     n_ = strokes.size();
     N_ = n_ + 1;
     K = improve_list_length(n_) - 1;
@@ -87,11 +81,9 @@ class TourImprover {
   std::uint32_t exit_of(std::uint32_t s) const { return 2 * s + 1 - flip_[s]; }
 
   bool stopped() {
-    if (result_.work >= work_cap_) return true;
-    if (result_.deadline_hit) return true;
-    if (clock_checks_++ % 64 == 0 && std::chrono::steady_clock::now() >= deadline_)
-      result_.deadline_hit = true;
-    return result_.deadline_hit;
+    if (result_.work < work_cap_) return false;
+    result_.capped = true;
+    return true;
   }
 
   // The lists from `shared_` when they cover exactly the stroke end points (see improve_order()).
@@ -389,7 +381,6 @@ class TourImprover {
   std::vector<GridStroke>& strokes_;
   const std::vector<GridPoint>& vertices_;
   TourEnds ends_;
-  std::chrono::steady_clock::time_point deadline_;
   std::size_t work_cap_;
   const SharedNeighbours* shared_;
   std::size_t max_rewrite_ = kMaxRewrite;
@@ -402,7 +393,6 @@ class TourImprover {
   std::vector<std::uint32_t> buffer_;
   std::deque<std::uint32_t> queue_;
   std::vector<std::uint8_t> queued_;
-  std::size_t clock_checks_ = 0;
   ImproveResult result_;
 };
 
@@ -542,10 +532,10 @@ void order_circuits(std::vector<GridStroke>& strokes, const std::vector<GridPoin
 }
 
 ImproveResult improve_order(std::vector<GridStroke>& strokes, const std::vector<GridPoint>& vertices,
-                            const TourEnds& ends, std::chrono::steady_clock::time_point deadline,
-                            std::size_t work_per_stroke, const SharedNeighbours* shared) {
+                            const TourEnds& ends, std::size_t work_per_stroke,
+                            const SharedNeighbours* shared) {
   if (strokes.empty()) return {};
-  TourImprover improver(strokes, vertices, ends, deadline, work_per_stroke * (strokes.size() + 1), shared);
+  TourImprover improver(strokes, vertices, ends, work_per_stroke * (strokes.size() + 1), shared);
   return improver.run();
 }
 

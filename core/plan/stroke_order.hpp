@@ -13,11 +13,10 @@
 //     taken from the odd-vertex matching) and a work queue, then each closed stroke re-entered at its best
 //     vertex; a second round if any was. The tour is a cycle closed by a pseudo-stroke from `end` to `start`,
 //     kept in a circular array where a move rewrites the shorter of the two arcs, and moves rewriting more
-//     than 25 000 positions are skipped (windowed). Work is capped in proportion to the stroke count, so the
-//     result is deterministic; the deadline is only a safety cap.
+//     than 25 000 positions are skipped (windowed). Work is capped in proportion to the stroke count and
+//     never measured in time, so the result depends only on the input.
 #pragma once
 
-#include <chrono>
 #include <cstddef>
 #include <vector>
 
@@ -54,9 +53,9 @@ bool order_exact(std::vector<GridStroke>& strokes, const std::vector<GridPoint>&
                  const TourEnds& ends);
 
 struct ImproveResult {
-  std::size_t moves = 0;      // improving 2-opt, Or-opt and re-entry moves applied
-  std::size_t work = 0;       // candidate evaluations plus array elements rewritten
-  bool deadline_hit = false;  // stopped by the clock rather than by the work cap or convergence
+  std::size_t moves = 0;  // improving 2-opt, Or-opt and re-entry moves applied
+  std::size_t work = 0;   // candidate evaluations plus array elements rewritten
+  bool capped = false;    // stopped by the work cap rather than by convergence
 };
 
 // Nearest-neighbour lists already computed over some graph vertices (min_weight_matching()'s over the odd
@@ -75,7 +74,7 @@ std::size_t improve_list_length(std::size_t strokes);
 // improve_list_length() (the first that many of each list are read), replaces the neighbour search (the
 // pseudo-stroke's two ends then get theirs by a linear scan and appear in no other list).
 ImproveResult improve_order(std::vector<GridStroke>& strokes, const std::vector<GridPoint>& vertices,
-                            const TourEnds& ends, std::chrono::steady_clock::time_point deadline,
-                            std::size_t work_per_stroke = 500, const SharedNeighbours* shared = nullptr);
+                            const TourEnds& ends, std::size_t work_per_stroke = 500,
+                            const SharedNeighbours* shared = nullptr);
 
 }  // namespace hlr::plan

@@ -4,10 +4,13 @@
 
 #include <gtest/gtest.h>
 
+#include <atomic>
+#include <cstdint>
 #include <cstdlib>
 #include <filesystem>
 #include <map>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "runtime/interrupt.hpp"
@@ -65,8 +68,9 @@ class FramePipeline : public ::testing::Test {
 };
 
 TEST_F(FramePipeline, BytesDoNotDependOnJobs) {
-  const std::vector<std::string> patterns = {"all.pdf",          "all.json",          "all.jsonl",          "f-{frame:02}.png",
-                                             "f-{frame:02}.svg", "f-{frame:02}.hpgl", "f-{frame:02}.steps"};
+  const std::vector<std::string> patterns = {"all.pdf",           "all.json",         "all.jsonl",
+                                             "f-{frame:02}.png",  "f-{frame:02}.svg", "f-{frame:02}.hpgl",
+                                             "f-{frame:02}.steps"};
   for (const std::string& pattern : patterns) {
     const std::string ext = fs::path(pattern).extension().string().substr(1);
     const auto one = render(ext + "-1", pattern, {"--jobs", "1"});
@@ -78,6 +82,38 @@ TEST_F(FramePipeline, BytesDoNotDependOnJobs) {
       EXPECT_EQ(many, one) << pattern << " with --jobs " << jobs;
     }
   }
+}
+
+// The optimized pen plan's work is counted, never timed: a large frame planned on an idle machine and
+// again with every core kept busy by spinning threads (started and stopped here) gives the same bytes.
+TEST_F(FramePipeline, PlansAreTheSameUnderLoad) {
+  // About 5 000 boxes of varied heights: tens of thousands of pieces, a plan of some 100 ms idle.
+  const fs::path city = dir_ / "city.hls";
+  std::ofstream(city)
+      << "for i in 0..70 { for j in 0..70 {\n"
+         "  draw box(4 + (i * 7 + j * 3) % 4, 4 + (i * 5 + j * 11) % 4, 3 + (i * 13 + j * 17) % 23)\n"
+         "    at translate(10 * i, 10 * j, 0)\n"
+         "} }\n"
+         "camera c = lookat(eye: (-200, -300, 400), target: (350, 350, 0), fov: 50)\n";
+  const auto render_city = [&](const std::string& name) {
+    const fs::path out = dir_ / name;
+    const test::CliResult r = test::run({city.string(), "-o", out.string(), "--jobs", "2"});
+    EXPECT_EQ(r.code, 0) << r.err;
+    return test::read_text(out);
+  };
+  const std::string idle = render_city("idle.hpgl");
+  ASSERT_GT(idle.size(), 100000U);
+  std::atomic<bool> stop{false};
+  std::vector<std::thread> burners;
+  for (unsigned k = 0; k < 2 * std::max(1U, std::thread::hardware_concurrency()); ++k)
+    burners.emplace_back([&stop] {
+      volatile std::uint64_t x = 0;
+      while (!stop.load(std::memory_order_relaxed)) x = x + 1;
+    });
+  const std::string loaded = render_city("loaded.hpgl");
+  stop = true;
+  for (std::thread& t : burners) t.join();
+  EXPECT_TRUE(idle == loaded) << "the plan changed under load";
 }
 
 TEST_F(FramePipeline, ShardsTogetherWriteWhatOneRunWrites) {
@@ -127,8 +163,8 @@ TEST_F(FramePipeline, AFailingFrameKeepsTheWholeFilesBeforeItAndNothingPartial) 
       EXPECT_EQ(r.code, 65) << r.err;
       EXPECT_NE(r.err.find("division by zero (in frame 9)"), std::string::npos) << r.err;
       if (pattern[0] == 'a') {
-        EXPECT_TRUE(fs::is_empty(sub)) << pattern << " --jobs " << jobs << ": " << files_in(sub).size()
-                                       << " files left";
+        EXPECT_TRUE(fs::is_empty(sub))
+            << pattern << " --jobs " << jobs << ": " << files_in(sub).size() << " files left";
         continue;
       }
       EXPECT_NE(r.err.find("frame 9 of 12 failed; kept 9 complete files (frames 0-8), none partial"),
@@ -226,7 +262,8 @@ TEST_F(FramePipeline, ADeviceRefusingTheScriptsPageIsReportedAtItsOutputStatemen
               std::string::npos)
         << r.err;
     // The frames before it are plotter files as complete as any; frame 3 and those after it are absent.
-    for (int f = 0; f < 6; ++f) EXPECT_EQ(fs::exists(dir_ / ("p-" + std::to_string(f) + ".hpgl")), f < 3) << f;
+    for (int f = 0; f < 6; ++f)
+      EXPECT_EQ(fs::exists(dir_ / ("p-" + std::to_string(f) + ".hpgl")), f < 3) << f;
     EXPECT_NE(r.err.find("frame 3 of 6 failed; kept 3 complete files (frames 0-2), none partial"),
               std::string::npos)
         << r.err;

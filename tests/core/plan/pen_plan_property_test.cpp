@@ -181,7 +181,6 @@ void check_properties(const std::vector<PlotPiece>& pieces, double grid, Point2 
       o.grid_mm = grid;
       o.home = home;
       o.merge_tolerance_grid = tolerance;
-      o.time_budget_ms = 1e6;  // the work cap, not the clock, must end the search (determinism)
       const PenPlan plan = plan_pen_strokes(pieces, o);
       SCOPED_TRACE("order " + std::to_string(static_cast<int>(order)) + " tolerance " +
                    std::to_string(tolerance));
@@ -248,7 +247,6 @@ void check_properties(const std::vector<PlotPiece>& pieces, double grid, Point2 
         const PenPlan threaded = plan_pen_strokes(pieces, two);
         EXPECT_TRUE(same_strokes(plan.strokes, threaded.strokes)) << "threads change the plan";
         EXPECT_EQ(plan.stats.kept_greedy, threaded.stats.kept_greedy);
-        EXPECT_FALSE(plan.stats.budget_exhausted);
       }
     }
     // Guaranteed up to kGreedyCheckEdges (the greedy plan is the fallback); beyond, measured on every

@@ -85,12 +85,11 @@ TEST(StrokeOrder, OrdersArePermutationsAndImprovementHelps) {
     for (const std::vector<GridStroke>* seed : {&greedy, &circuits}) {
       std::vector<GridStroke> improved = *seed;
       const double before = tour_travel(improved, vertices, ends);
-      const ImproveResult res =
-          improve_order(improved, vertices, ends, std::chrono::steady_clock::now() + std::chrono::hours(1));
+      const ImproveResult res = improve_order(improved, vertices, ends);
       EXPECT_EQ(canonical_set(improved), want);
       const double after = tour_travel(improved, vertices, ends);
       EXPECT_LE(after, before + 1e-6) << "trial " << trial;
-      EXPECT_FALSE(res.deadline_hit);
+      EXPECT_LE(res.work, 500 * (strokes.size() + 1) + 25000);  // the cap, and at most one move past it
       if (n <= static_cast<int>(kExactOrderStrokes)) {
         std::vector<GridStroke> exact = strokes;
         if (order_exact(exact, vertices, ends)) {
@@ -129,9 +128,8 @@ TEST(StrokeOrder, ImproveWithSharedNeighbours) {
   order_circuits(a, vertices, ends);
   const double before = tour_travel(a, vertices, ends);
   b = a;
-  const auto deadline = std::chrono::steady_clock::now() + std::chrono::hours(1);
-  const ImproveResult ra = improve_order(a, vertices, ends, deadline, 500, &shared);
-  improve_order(b, vertices, ends, deadline, 500, &shared);
+  const ImproveResult ra = improve_order(a, vertices, ends, 500, &shared);
+  improve_order(b, vertices, ends, 500, &shared);
   EXPECT_EQ(canonical_set(a), canonical_set(strokes));
   EXPECT_LT(tour_travel(a, vertices, ends), before);
   EXPECT_GT(ra.moves, 0u);
