@@ -9,7 +9,9 @@ cd "$(dirname "$0")/.."
 seconds=${1:-30}
 jobs=${FUZZ_JOBS:-2}
 read -r -a targets <<<"${FUZZ_TARGETS:-parser evaluator off obj stl_ascii stl_binary albers engine}"
-build_dir=build-fuzz
+# FUZZ_BUILD_DIR (default build-fuzz) may be a sanitizer build of the tests too (CI's: configured with
+# -DHLR_FUZZ=ON -DHLR_SANITIZE=ON and tests on; scripts/sanitize.sh), whose libraries both then share.
+build_dir=${FUZZ_BUILD_DIR:-build-fuzz}
 work=$build_dir/fuzz-runs
 
 # Inputs longer than the seeds are rarely useful; these leave room for a few mutations beyond them.
@@ -20,8 +22,10 @@ declare -A dict=([parser]=hls.dict [evaluator]=hls.dict [off]=mesh.dict [obj]=me
                  [albers]=mesh.dict)
 
 bash scripts/setup.sh  # clang and libclang-rt-14-dev among the rest
-CC=clang CXX=clang++ cmake -S . -B "$build_dir" -G Ninja -DHLR_FUZZ=ON -DHLR_BUILD_TESTS=OFF \
-  -DHLR_BUILD_BENCH=OFF -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null
+if [ ! -f "$build_dir/CMakeCache.txt" ]; then
+  CC=clang CXX=clang++ cmake -S . -B "$build_dir" -G Ninja -DHLR_FUZZ=ON -DHLR_BUILD_TESTS=OFF \
+    -DHLR_BUILD_BENCH=OFF -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null
+fi
 ninja -C "$build_dir" -j "${FUZZ_BUILD_JOBS:-2}" fuzz_all
 
 export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1} UBSAN_OPTIONS=${UBSAN_OPTIONS:-print_stacktrace=1}
