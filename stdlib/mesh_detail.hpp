@@ -40,7 +40,7 @@ struct RawLine {
 
 struct RawMesh {
   std::vector<std::string> files;  // names used in problems
-  const char* face_noun = "face";  // "face", "facet", "triangle", "surface"
+  std::string face_noun = "face";  // "face", "facet", "triangle", "surface" (by value: == compares words)
   int vertex_base = 0;             // the number of the first vertex in messages (OFF 0, others 1)
   bool welded_by_format = false;   // STL: exact welding is how its vertices are found, not a repair
   std::vector<RawVertex> vertices;

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "tests/runtime/cli_run.hpp"
+#include "tests/runtime/runtime_test_support.hpp"
 #include "tests/support/temp_dir.hpp"
 
 namespace hlr::runtime {
@@ -22,12 +23,7 @@ namespace {
 namespace fs = std::filesystem;
 using nlohmann::json;
 
-std::string current_test_name() {
-  std::string name = ::testing::UnitTest::GetInstance()->current_test_info()->name();
-  for (char& c : name)
-    if (!std::isalnum(static_cast<unsigned char>(c))) c = '-';
-  return "framing-" + name;
-}
+std::string current_test_name() { return test::scratch_name("framing"); }
 
 // Every frame of the script as JSON.
 json render_frames(const hlr::test::TempDir& dir, const std::string& text,

@@ -33,12 +33,7 @@ using test::run;
 
 const fs::path kExamplesDir = fs::path(HLR_TEST_DATA_DIR).parent_path().parent_path() / "examples";
 
-std::string current_test_name() {
-  std::string name = ::testing::UnitTest::GetInstance()->current_test_info()->name();
-  for (char& c : name)
-    if (!std::isalnum(static_cast<unsigned char>(c))) c = '-';
-  return "devagree-" + name;
-}
+std::string current_test_name() { return test::scratch_name("devagree"); }
 
 // ---- the same strokes on every device ----
 

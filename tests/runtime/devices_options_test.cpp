@@ -32,12 +32,7 @@ using Result = test::CliResult;
 using test::read_text;
 using test::run;
 
-std::string current_test_name() {
-  std::string name = ::testing::UnitTest::GetInstance()->current_test_info()->name();
-  for (char& c : name)
-    if (!std::isalnum(static_cast<unsigned char>(c))) c = '-';
-  return "devopts-" + name;
-}
+std::string current_test_name() { return test::scratch_name("devopts"); }
 
 bool contains(const std::string& text, const std::string& part) {
   return text.find(part) != std::string::npos;

@@ -32,12 +32,7 @@ using test::run;
 const fs::path kTestsDir = fs::path(HLR_TEST_DATA_DIR).parent_path();
 const fs::path kExamplesDir = kTestsDir.parent_path() / "examples";
 
-std::string current_test_name() {
-  std::string name = ::testing::UnitTest::GetInstance()->current_test_info()->name();
-  for (char& c : name)
-    if (!std::isalnum(static_cast<unsigned char>(c))) c = '-';
-  return "devices-" + name;
-}
+std::string current_test_name() { return test::scratch_name("devices"); }
 
 // ---- the examples: tests/CMakeLists.txt's HLR_EXAMPLES list ("path:pages"), read, not copied ----
 

@@ -20,12 +20,7 @@ namespace {
 namespace fs = std::filesystem;
 using nlohmann::json;
 
-std::string current_test_name() {
-  std::string name = ::testing::UnitTest::GetInstance()->current_test_info()->name();
-  for (char& c : name)
-    if (!std::isalnum(static_cast<unsigned char>(c))) c = '-';
-  return "labels-" + name;
-}
+std::string current_test_name() { return test::scratch_name("labels"); }
 
 TEST(Labels, TheEvaluatorRecordsEachLabel) {
   const FrameScene scene = test::run_ok(

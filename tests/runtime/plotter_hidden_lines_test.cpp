@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "tests/runtime/cli_run.hpp"
+#include "tests/runtime/runtime_test_support.hpp"
 #include "tests/support/hpgl_reader.hpp"
 #include "tests/support/temp_dir.hpp"
 
@@ -22,12 +23,7 @@ namespace {
 namespace fs = std::filesystem;
 using nlohmann::json;
 
-std::string current_test_name() {
-  std::string name = ::testing::UnitTest::GetInstance()->current_test_info()->name();
-  for (char& c : name)
-    if (!std::isalnum(static_cast<unsigned char>(c))) c = '-';
-  return "plotter-hidden-" + name;
-}
+std::string current_test_name() { return test::scratch_name("plotter-hidden"); }
 
 // The box, with its hidden edges asked for.
 constexpr const char* kBox =

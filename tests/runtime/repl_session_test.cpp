@@ -256,7 +256,8 @@ TEST_F(ReplFiles, SaveWritesAScriptThatRendersTheSameDrawing) {
             "camera top = ortho(eye: (2, 1, 20), target: (2, 1, 0), up: (0, 1, 0), height: 12)"});
   feed_all(s, {":camera side", ":hidden on"});
   const fs::path saved = dir_ / "session.hls";
-  EXPECT_EQ(s.feed(":save " + saved.string()).text, "saved the session to " + saved.string() + " (5 inputs)\n");
+  EXPECT_EQ(s.feed(":save " + saved.string()).text,
+            "saved the session to " + saved.string() + " (5 inputs)\n");
   EXPECT_EQ(s.feed(":render " + (dir_ / "from-session.json").string()).kind, ReplReply::Kind::Done);
   const test::CliResult r = test::run({saved.string(), "-o", (dir_ / "from-file.json").string()});
   ASSERT_EQ(r.code, 0) << r.err;
@@ -283,10 +284,10 @@ TEST_F(ReplFiles, OrbitZoomAndDollyChangeThePictureAndSaveAsAdjust) {
   EXPECT_EQ(s.feed(":zoom -1").kind, ReplReply::Kind::Error);
   EXPECT_EQ(s.feed(":orbit left").kind, ReplReply::Kind::Error);
   // Saved as the camera's own expression, adjusted about the middle of the box.
-  EXPECT_NE(
-      s.script().find("camera adjusted_c = adjust(lookat(eye: (10, -6, 5), target: (1.5, 1, 0.5)), theta: 60, "
-                      "phi: 15, zoom: 2, dolly: 1.5, pivot: (1.5, 1, 0.5))"),
-      std::string::npos)
+  EXPECT_NE(s.script().find(
+                "camera adjusted_c = adjust(lookat(eye: (10, -6, 5), target: (1.5, 1, 0.5)), theta: 60, "
+                "phi: 15, zoom: 2, dolly: 1.5, pivot: (1.5, 1, 0.5))"),
+            std::string::npos)
       << s.script();
   const fs::path saved = dir_ / "orbit.hls";
   s.feed(":save " + saved.string());

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <cctype>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -19,6 +20,15 @@
 namespace hlr::runtime::test {
 
 using hlr::test::TempDir;
+
+// "PREFIX-TestName" with anything but letters and digits as '-': a scratch folder's name for the test
+// running now.
+inline std::string scratch_name(const std::string& prefix) {
+  std::string name = ::testing::UnitTest::GetInstance()->current_test_info()->name();
+  for (char& c : name)
+    if (!std::isalnum(static_cast<unsigned char>(c))) c = '-';
+  return prefix + "-" + name;
+}
 
 // Spans hold offsets; the line and column come from the file the span names.
 inline std::string line_col(const lang::Diagnostic& d, const lang::SourceFile& file) {

@@ -63,7 +63,9 @@ void expect_stats_consistent(const PenPlan& plan, const PlanOptions& o) {
   EXPECT_GE(st.lifts, st.lift_lower_bound);
 }
 
-PlotPiece piece(Point2 a, Point2 b, int pen = 1, StrokeLayer layer = StrokeLayer::Visible) { return {a, b, pen, layer}; }
+PlotPiece piece(Point2 a, Point2 b, int pen = 1, StrokeLayer layer = StrokeLayer::Visible) {
+  return {a, b, pen, layer};
+}
 
 TEST(PenPlan, EmptyAndInvalid) {
   for (PenOrder order : kOrders) {
@@ -80,8 +82,9 @@ TEST(PenPlan, EmptyAndInvalid) {
   EXPECT_THROW(plan_pen_strokes({}, bad), std::invalid_argument);
   // Degenerate and non-finite pieces are dropped and counted.
   const double nan = std::numeric_limits<double>::quiet_NaN();
-  const PenPlan p = plan_pen_strokes({piece({1, 1}, {1.001, 1}), piece({nan, 0}, {1, 1}), piece({0, 0}, {5, 0})},
-                                     options(PenOrder::Optimized));
+  const PenPlan p =
+      plan_pen_strokes({piece({1, 1}, {1.001, 1}), piece({nan, 0}, {1, 1}), piece({0, 0}, {5, 0})},
+                       options(PenOrder::Optimized));
   EXPECT_EQ(p.stats.pieces, 3u);
   EXPECT_EQ(p.stats.dropped_pieces, 2u);
   ASSERT_EQ(p.strokes.size(), 1u);
@@ -189,7 +192,11 @@ TEST(PenPlan, NonePreservesPieces) {
   for (int i = 0; i < 300; ++i) {
     const Point2 a = r.integer(0, 2) ? last : Point2{r(0, 200), r(0, 200)};
     const Point2 b{r(0, 200), r(0, 200)};
-    pieces.push_back(piece(a, b, r.integer(1, 3), r.integer(0, 3) ? StrokeLayer::Visible : StrokeLayer::Hidden));
+    // Drawn one statement at a time: the order a function's arguments are evaluated in differs between
+    // compilers, and the pieces must not (the layer first, as GCC has always drawn them).
+    const StrokeLayer layer = r.integer(0, 3) ? StrokeLayer::Visible : StrokeLayer::Hidden;
+    const int pen = r.integer(1, 3);
+    pieces.push_back(piece(a, b, pen, layer));
     last = b;
   }
   pieces.push_back(piece({5, 5}, {5.001, 5.001}));  // snaps to nothing
@@ -229,7 +236,8 @@ TEST(PenPlan, GroupsByPenAndLayer) {
     std::vector<std::pair<int, StrokeLayer>> seen;
     for (const PlotStroke& s : plan.strokes) seen.emplace_back(s.pen, s.layer);
     EXPECT_TRUE(std::is_sorted(seen.begin(), seen.end(), [](auto a, auto b) {
-      return a.first != b.first ? a.first < b.first : (a.second == StrokeLayer::Visible && b.second == StrokeLayer::Hidden);
+      return a.first != b.first ? a.first < b.first
+                                : (a.second == StrokeLayer::Visible && b.second == StrokeLayer::Hidden);
     }));
     // Pen 1 visible holds [20,30] and [40,50] (two components); pen 1 hidden, pens 2 and 3 one each.
     EXPECT_EQ(plan.stats.lift_lower_bound, 5u);
