@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <sstream>
@@ -180,6 +181,26 @@ TEST(PlotterHiddenLines, TheHiddenPenDrawsTheDashes) {
   int pen2 = 0;
   for (const hlr::test::HpglRun& run : replay.runs) pen2 += run.pen == 2;
   EXPECT_GT(pen2, 10);
+}
+
+// The incremental plotter's tape likewise: its header counts the strokes and the pen-down steps.
+TEST(PlotterHiddenLines, TheStepTapeDrawsDashesToo) {
+  const hlr::test::TempDir dir(current_test_name());
+  const auto header = [&](const std::string& name, std::vector<std::string> extra) {
+    const std::string text = render(dir, name, "dashed", std::move(extra));
+    long down = 0, strokes = 0;
+    const std::size_t at = text.find("pen-down steps");
+    EXPECT_NE(at, std::string::npos) << text.substr(0, 400);
+    long up = 0;
+    std::sscanf(text.c_str() + text.rfind('#', at), "# %ld pen-down steps, %ld pen-up steps, %ld strokes",
+                &down, &up, &strokes);
+    return std::pair{down, strokes};
+  };
+  const auto [dashed_down, dashed_strokes] = header("dashed.steps", {});
+  const auto [solid_down, solid_strokes] = header("solid.steps", {"--dash", "solid"});
+  EXPECT_GE(dashed_strokes, solid_strokes + 30);  // the hidden edges as dozens of dashes
+  EXPECT_LT(dashed_down, solid_down);             // with the pen up over the gaps
+  EXPECT_GT(dashed_down, solid_down * 3 / 4);
 }
 
 }  // namespace
