@@ -142,10 +142,8 @@ void Evaluator::exec_include(const lang::IncludeStmt& include, const ScopePtr& s
     if (library) {
       // The modules there, as an include names them, and the likeliest one.
       std::vector<std::string> modules;
-      std::error_code ec;
-      for (const auto& e : std::filesystem::directory_iterator(stdlib_module_directory(), ec))
-        if (e.path().extension() == ".hls") modules.push_back("std/" + e.path().filename().string());
-      std::sort(modules.begin(), modules.end());
+      for (const std::filesystem::path& file : library_module_files())
+        modules.push_back("std/" + file.filename().string());
       const std::string guess = did_you_mean(include.path, modules);
       std::error_code missing;
       if (!std::filesystem::exists(target, missing))

@@ -73,4 +73,13 @@ std::optional<std::string> FileAccess::write_refusal(const fs::path& path, const
          (out_dir_given_ ? ", from --out-dir)" : ", the working directory)");
 }
 
+std::vector<fs::path> library_module_files() {
+  std::vector<fs::path> files;
+  std::error_code ec;
+  for (const auto& e : fs::directory_iterator(stdlib_module_directory(), ec))
+    if (e.path().extension() == ".hls") files.push_back(e.path());
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
 }  // namespace hlr::runtime

@@ -59,4 +59,7 @@ bool is_below(const std::filesystem::path& path, const std::filesystem::path& ro
 // own); else the source tree's, for a program run from its build folder.
 std::filesystem::path stdlib_module_directory();
 
+// The modules' files there (*.hls), sorted by name; none when the folder cannot be read.
+std::vector<std::filesystem::path> library_module_files();
+
 }  // namespace hlr::runtime

@@ -91,12 +91,7 @@ struct ModuleFunction {
 // Every top-level def of the library modules, read from their files (in stdlib_module_directory()).
 std::vector<ModuleFunction> module_functions() {
   std::vector<ModuleFunction> out;
-  std::vector<std::filesystem::path> files;
-  std::error_code ec;
-  for (const auto& e : std::filesystem::directory_iterator(stdlib_module_directory(), ec))
-    if (e.path().extension() == ".hls") files.push_back(e.path());
-  std::sort(files.begin(), files.end());
-  for (const std::filesystem::path& file : files) {
+  for (const std::filesystem::path& file : library_module_files()) {
     std::ifstream in(file, std::ios::binary);
     std::ostringstream text;
     text << in.rdbuf();

@@ -9,6 +9,7 @@
 
 #include "core/device/atomic_file.hpp"
 #include "core/device/utf8.hpp"
+#include "core/geometry/rect2.hpp"
 
 extern "C" {  // the C libraries' headers have no C++ guard
 #include <hersheyfont.h>
@@ -122,12 +123,14 @@ StrokeGlyph box() {  // what a missing character is drawn as
 
 // ---- accents -----------------------------------------------------------------------------------------
 
-double top_of(const StrokeGlyph& g) {
-  double top = 0;
+Rect2 bounds_of(const StrokeGlyph& g) {
+  Rect2 b = Rect2::none();
   for (const auto& s : g.strokes)
-    for (const Point2& p : s) top = std::max(top, p.y);
-  return top;
+    for (const Point2& p : s) b.include(p);
+  return b;
 }
+
+double top_of(const StrokeGlyph& g) { return std::max(0.0, bounds_of(g).ymax); }
 
 // Adds the combining mark `mark` to `g`; false for a mark not drawn here. Marks above sit 2 units over the
 // glyph's top (stacked marks over each other), marks below under the baseline.
@@ -246,21 +249,6 @@ std::optional<char> ascii_form(char32_t c) {
   }
 }
 
-struct Bounds {
-  double xmin = 1e9, ymin = 1e9, xmax = -1e9, ymax = -1e9;
-};
-Bounds bounds_of(const StrokeGlyph& g) {
-  Bounds b;
-  for (const auto& s : g.strokes)
-    for (const Point2& p : s) {
-      b.xmin = std::min(b.xmin, p.x);
-      b.xmax = std::max(b.xmax, p.x);
-      b.ymin = std::min(b.ymin, p.y);
-      b.ymax = std::max(b.ymax, p.y);
-    }
-  return b;
-}
-
 StrokeGlyph glyph_of(char32_t c, int depth);
 
 // Letters Unicode does not decompose, made from a Latin letter and a stroke across it (ø, ł, đ) or from two
@@ -271,7 +259,7 @@ std::optional<StrokeGlyph> made_letter(char32_t c, int depth) {
     case 0xf8:  // ø, Ø: a slash through the round letter
     case 0xd8: {
       StrokeGlyph g = base(c == 0xf8 ? 'o' : 'O');
-      const Bounds b = bounds_of(g);
+      const Rect2 b = bounds_of(g);
       g.strokes.push_back({{b.xmin - 1, b.ymin - 1}, {b.xmax + 1, b.ymax + 1}});
       return g;
     }

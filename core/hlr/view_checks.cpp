@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 
+#include "core/geometry/box3.hpp"
 #include "core/tolerance.hpp"
 
 namespace hlr {
@@ -56,11 +57,9 @@ Crossing ray_crosses_face(const Solid& solid, std::size_t f, Point3 p, Vector3 d
 
 bool point_inside_closed_solid(const Solid& solid, Point3 p) {
   if (!solid.closed || solid.vertices.empty()) return false;
-  Point3 lo = solid.vertices[0], hi = lo;
-  for (const Point3& v : solid.vertices) {
-    lo = {std::min(lo.x, v.x), std::min(lo.y, v.y), std::min(lo.z, v.z)};
-    hi = {std::max(hi.x, v.x), std::max(hi.y, v.y), std::max(hi.z, v.z)};
-  }
+  Box3 box;
+  for (const Point3& v : solid.vertices) box.include(v);
+  const Point3 lo = box.lo, hi = box.hi;
   if (p.x < lo.x || p.y < lo.y || p.z < lo.z || p.x > hi.x || p.y > hi.y || p.z > hi.z) return false;
   const double tolerance = Tolerance::kRelative * std::max(distance(lo, hi), 1.0);
   for (const Vector3& d : kRays) {
