@@ -20,7 +20,7 @@
 
 #include "bench/bench_scenes.hpp"
 #include "bench/command_main.hpp"
-#include "core/device/page_layout.hpp"
+#include "core/device/page/page_layout.hpp"
 #include "core/hlr/render_frame.hpp"
 #include "core/plan/pen_plan.hpp"
 

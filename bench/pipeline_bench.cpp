@@ -12,8 +12,8 @@
 #include <vector>
 
 #include "bench/command_main.hpp"
-#include "runtime/cli.hpp"
-#include "runtime/solid_cache.hpp"
+#include "runtime/builtins/solid_cache.hpp"
+#include "runtime/cli/cli.hpp"
 
 namespace {
 

@@ -1,6 +1,6 @@
 // The numeric limits of drawings and devices, shared by core's checks and the runtime's (script settings,
 // command-line options): one number each, so that what one side accepts the other never rejects, and
-// messages print the number from here. The evaluator's runaway limits stay in runtime/limits.hpp.
+// messages print the number from here. The evaluator's runaway limits stay in runtime/base/limits.hpp.
 #pragma once
 
 namespace hlr {
@@ -20,8 +20,8 @@ inline constexpr double kMinMmPerUnit = 1e-9;
 inline constexpr double kMaxMmPerUnit = 1e9;
 
 // ---- HPGL plotters
-// VS velocity in cm/s, the range core/device/hpgl_device.hpp documents. A plotter clamps a VS above its
-// own top speed (38.1 cm/s on the HP 7475A, 80 on the 7550A), so the cap only rejects nonsense.
+// VS velocity in cm/s, the range core/device/formats/hpgl_device.hpp documents. A plotter clamps a VS above
+// its own top speed (38.1 cm/s on the HP 7475A, 80 on the 7550A), so the cap only rejects nonsense.
 inline constexpr double kMinVelocityCmS = 0.01;
 inline constexpr double kMaxVelocityCmS = 1000;
 // Millimetres per plotter unit: real plotters step 0.025 mm (HP, Roland) or 0.01 mm (cutters).

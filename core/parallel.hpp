@@ -1,4 +1,4 @@
-// The one scheduler: oneTBB. Frames (runtime/frame_pipeline.cpp) and the work inside a frame (the
+// The one scheduler: oneTBB. Frames (runtime/pipeline/frame_pipeline.cpp) and the work inside a frame (the
 // engine's objects and edges) are tasks of the same arena, so idle cores steal whatever is left, and the
 // arena the caller runs in (hlrscript --jobs N) bounds them all.
 #pragma once

@@ -28,7 +28,7 @@ struct Camera {
   // Perspective near plane, in view depth units (> 0).
   double near_depth = Tolerance::kDefaultNearDepth;
   std::optional<Rect2> frame;  // picture frame: drawn pieces are clipped to it (Desens' WINDOW, aspect:)
-  // Without a frame of its own the camera frames the page it is drawn on (core/device/page_layout.hpp,
+  // Without a frame of its own the camera frames the page it is drawn on (core/device/page/page_layout.hpp,
   // picture_frame): the picture spans ±window_half along the drawing area's shorter side. 1 for lookat
   // (the fov) and ortho (the height); 90 for orbit (Albers' drawing window, 180 rows of the CGA screen).
   double window_half = 1;

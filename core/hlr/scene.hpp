@@ -11,8 +11,8 @@
 namespace hlr {
 
 // Solids are immutable and shared: a scene holds each in world space, and frames whose object and
-// placement did not change hold the very same one (runtime/solid_cache.hpp), with its edge table and face
-// planes already derived.
+// placement did not change hold the very same one (runtime/builtins/solid_cache.hpp), with its edge table and
+// face planes already derived.
 struct SceneObject {
   SceneObject() = default;
   SceneObject(std::string name_, std::shared_ptr<const Solid> solid_)

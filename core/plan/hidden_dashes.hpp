@@ -12,7 +12,7 @@ namespace hlr {
 
 struct DashPattern {
   // Pen-down length and gap as drawn, before stretching. With a 0.3 mm pen (round tip) they are seen as
-  // 2.3 mm dashes and 1.2 mm gaps: the cairo devices' look (core/device/page_style.hpp).
+  // 2.3 mm dashes and 1.2 mm gaps: the cairo devices' look (core/device/page/page_style.hpp).
   double dash_mm = 2;
   double gap_mm = 1.5;
 };

@@ -26,7 +26,7 @@ from collections import Counter
 TOL = 0.002
 GRID = 0.025  # the planning grid: both files' points lie on it, so keys built from it are stable
 
-# The built-in profiles' numbers as documented (core/device/gcode_profile.cpp, LANGUAGE_SPEC.md).
+# The built-in profiles' numbers as documented (core/device/plotters/gcode_profile.cpp, LANGUAGE_SPEC.md).
 PROFILES = {
     "grbl-servo": {"mode": "servo", "up": 30.0, "down": 60.0, "w": 420.0, "h": 297.0, "origin": "bottom-left"},
     "grbl-z": {"mode": "z", "up": 5.0, "down": 0.0, "w": 420.0, "h": 297.0, "origin": "bottom-left"},
@@ -198,7 +198,7 @@ def check(hlrscript, script, work, name, profile_name, profile, extra=()):
     # strokes of neighbouring letters overlap the two plans may split them differently; caption() checks them.
     common = [script, "--frames", "0", "--plain"] + list(extra)
     # --dash solid: the hidden layer whole, so that its segments match JSON's too (the dashes plotters draw
-    # by default are checked in tests/runtime/plotter_hidden_lines_test.cpp).
+    # by default are checked in tests/runtime/pipeline/plotter_hidden_lines_test.cpp).
     run(hlrscript, common + ["-o", gcode, "--dash", "solid"] + (["--plotter", profile_name] if profile_name else []))
     run(hlrscript, common + ["-o", js])
     with open(gcode) as f:

@@ -8,7 +8,7 @@ The language's words come from where the language is defined, not from a copy:
     from its `reserved` rule), including keyword-like rules such as `frames`, `hidden`, `dashed`;
   - the statements and the built-in functions and constants that `HLRSCRIPT help reference` prints
     (runtime/BUILTINS.md is that output);
-  - the names bound before each frame (runtime/evaluator.cpp, `frame_globals->define("...")`).
+  - the names bound before each frame (runtime/eval/evaluator.cpp, `frame_globals->define("...")`).
 Then, for the TextMate grammar (editors/hlrscript.tmLanguage.json) and the Vim syntax
 (editors/vim/syntax/hlrscript.vim):
   - each word is highlighted as what it is (a keyword, a built-in function, a constant, a frame
@@ -421,7 +421,7 @@ def main(argv):
 
     keywords, reserved = grammar_words(os.path.join(source, "lang", "grammar.hpp"))
     statements, functions, constants = reference_words(hlrscript)
-    frames = frame_names(os.path.join(source, "runtime", "evaluator.cpp"))
+    frames = frame_names(os.path.join(source, "runtime", "eval", "evaluator.cpp"))
     # A parse that found nothing would make every check below pass: refuse it.
     for name, found, least in (("keywords", keywords, 30), ("reserved words", reserved, 20),
                                ("statements", statements, 15), ("functions", functions, 50),

@@ -26,7 +26,7 @@
 #include "core/camera/camera_error.hpp"
 #include "core/camera/lookat_camera.hpp"
 #include "core/camera/ortho_camera.hpp"
-#include "core/device/page_plot.hpp"
+#include "core/device/page/page_plot.hpp"
 #include "core/hlr/render_frame.hpp"
 #include "core/solid/solid_builder.hpp"
 #include "tests/fuzz/fuzz_input.hpp"

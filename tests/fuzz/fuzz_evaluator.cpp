@@ -15,10 +15,10 @@
 #include <string>
 #include <system_error>
 
-#include "runtime/eval_error.hpp"
-#include "runtime/limits.hpp"
-#include "runtime/program.hpp"
-#include "runtime/run_error.hpp"
+#include "runtime/base/eval_error.hpp"
+#include "runtime/base/limits.hpp"
+#include "runtime/eval/program.hpp"
+#include "runtime/pipeline/run_error.hpp"
 #include "tests/fuzz/fuzz_input.hpp"
 
 namespace {

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "runtime/cli.hpp"
+#include "runtime/cli/cli.hpp"
 
 namespace hlr::runtime::test {
 

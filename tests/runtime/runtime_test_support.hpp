@@ -10,11 +10,11 @@
 #include <fstream>
 #include <string>
 
-#include "runtime/eval_error.hpp"
-#include "runtime/evaluator.hpp"
-#include "runtime/format_value.hpp"
-#include "runtime/program.hpp"
-#include "runtime/source_table.hpp"
+#include "runtime/base/eval_error.hpp"
+#include "runtime/base/source_table.hpp"
+#include "runtime/eval/evaluator.hpp"
+#include "runtime/eval/program.hpp"
+#include "runtime/values/format_value.hpp"
 #include "tests/support/temp_dir.hpp"
 
 namespace hlr::runtime::test {

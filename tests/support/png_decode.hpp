@@ -1,5 +1,5 @@
-// Reads a PNG file's bytes back with libpng's own reader (the tests of core/device/png_encoder.cpp and of
-// the PNG device): its pixels as straight RGBA, and the colour type its header declares.
+// Reads a PNG file's bytes back with libpng's own reader (the tests of core/device/formats/png_encoder.cpp
+// and of the PNG device): its pixels as straight RGBA, and the colour type its header declares.
 #pragma once
 
 #include <cstdint>

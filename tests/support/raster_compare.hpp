@@ -2,7 +2,8 @@
 // placement: each image becomes an ink mask (dark pixels, composited over white), both are normalised by
 // their inked bounding box with one scale for both axes (so an aspect or orientation error still shows),
 // and each inked pixel must find ink within a few pixels in the other. Used to check hp2xx's rendering of
-// our HPGL against a cairo raster (tests/core/device/hpgl_hp2xx_test.cpp, tests/runtime/devices_test.cpp).
+// our HPGL against a cairo raster (tests/core/device/formats/hpgl_hp2xx_test.cpp,
+// tests/runtime/pipeline/devices_test.cpp).
 #pragma once
 
 #include <cstddef>

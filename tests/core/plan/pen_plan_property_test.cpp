@@ -14,7 +14,7 @@
 #include <vector>
 
 #include "core/camera/lookat_camera.hpp"
-#include "core/device/page_layout.hpp"
+#include "core/device/page/page_layout.hpp"
 #include "core/hlr/render_frame.hpp"
 #include "core/plan/pen_graph.hpp"
 #include "core/plan/pen_plan.hpp"

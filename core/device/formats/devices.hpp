@@ -1,0 +1,33 @@
+// The devices behind the Device interface (core/device/page/device.hpp), each made from its own settings.
+#pragma once
+
+#include <memory>
+
+#include "core/device/formats/cairo_device.hpp"
+#include "core/device/formats/gcode_device.hpp"
+#include "core/device/formats/hpgl_device.hpp"
+#include "core/device/formats/json_device.hpp"
+#include "core/device/formats/plotter_svg.hpp"
+#include "core/device/formats/step_device.hpp"
+#include "core/device/page/device.hpp"
+
+namespace hlr {
+
+// PDF (any number of pages; core/device/formats/pdf_writer.hpp), SVG or PNG (one each), as options.format
+// says. Planned on the page grid from the page's top-left corner, with the generic plotter's speeds for the
+// time estimate.
+std::unique_ptr<Device> make_cairo_device(const CairoOptions& options);
+// SVG for pen plotters (core/device/formats/plotter_svg.hpp): layers per pen, one path per planned stroke.
+// Planned as the cairo devices are.
+std::unique_ptr<Device> make_plotter_svg_device(const PlotterSvgOptions& options);
+// HP-GL for `profile`: planned in its plotter units from its origin, within the margin its reach needs.
+std::unique_ptr<Device> make_hpgl_device(const HpglProfile& profile, const HpglOptions& options = {});
+// The incremental plotter's tape: planned on its step grid from the sheet's bottom-left corner.
+std::unique_ptr<Device> make_step_device(const StepOptions& options = {});
+// hlrscript.lines/1, any number of frames; planned as the cairo devices are.
+std::unique_ptr<Device> make_json_device(const JsonOptions& options);
+// G-code for a GRBL pen plotter `profile`: planned on kGcodeGridMm from the machine's origin on the page,
+// with the profile's feeds and dwells for the time estimate.
+std::unique_ptr<Device> make_gcode_device(const GcodeProfile& profile, const GcodeOptions& options = {});
+
+}  // namespace hlr

@@ -1,0 +1,98 @@
+#include "core/device/page/page_plot.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/device/page/atomic_file.hpp"
+#include "core/device/page/stroke_text.hpp"
+#include "core/limits.hpp"
+
+namespace hlr {
+namespace {
+
+Point2 page_point(const PageLayout& layout, Point2 picture) {
+  const Point2 mm = layout.to_page_mm(picture);
+  if (!std::isfinite(mm.x) || !std::isfinite(mm.y))
+    throw DeviceError("a piece maps to a non-finite page coordinate; cannot draw it");
+  return mm;
+}
+
+int checked_pen(int pen) {
+  if (pen < 1 || pen > kMaxPen)
+    throw DeviceError("pen " + std::to_string(pen) + " is outside 1.." + std::to_string(kMaxPen));
+  return pen;
+}
+
+// Text strokes as pieces of one pen, visible.
+void add_strokes(const std::vector<std::vector<Point2>>& strokes, int pen, std::vector<PlotPiece>& pieces) {
+  for (const std::vector<Point2>& stroke : strokes)
+    for (std::size_t i = 1; i < stroke.size(); ++i) {
+      PlotPiece p;
+      p.a = stroke[i - 1];
+      p.b = stroke[i];
+      p.pen = pen;
+      pieces.push_back(p);
+    }
+}
+
+// The caption's strokes as pieces of pen 1: on the baseline where the printed caption sits (0.6 of the
+// margin up from the bottom edge) unless the pen cannot reach its descenders there, then raised to the
+// reach; made smaller when the band between the drawing and the reach, or the page's width, is too small.
+void add_caption(const std::string& caption, const PlotPage& page, double reach,
+                 std::vector<PlotPiece>& pieces) {
+  const double margin = page.margin_mm, descent_per_cap = 7.0 / 21.0;
+  const double band = margin - reach - 1;  // from the reach's edge to 1 mm below the drawing
+  double cap = std::min(kCaptionCapHeightMm, band / (1 + descent_per_cap));
+  const double left = std::max(margin, reach), room = page.width_mm - 2 * left;
+  const double width = stroke_text_width_mm(caption, cap);
+  if (width > room && width > 0) cap *= room / width;
+  if (!(cap > 0.5)) return;  // no room for legible letters: no caption
+  const double baseline =
+      std::min(page.height_mm - 0.6 * margin, page.height_mm - reach - cap * descent_per_cap);
+  add_strokes(stroke_text(caption, {left, baseline}, cap), 1, pieces);
+}
+
+}  // namespace
+
+PagePlot plot_page(const std::vector<VisibleSegment>& segments, const std::optional<Rect2>& frame,
+                   std::string caption, const PagePlotOptions& o) {
+  PagePlot out;
+  out.layout = o.extent ? fit_rect_to_page(*o.extent, o.spec) : fit_to_page(frame, segments, o.spec);
+  out.page.width_mm = o.spec.paper.width_mm;
+  out.page.height_mm = o.spec.paper.height_mm;
+  out.page.margin_mm = o.spec.margin_mm;
+  out.page.caption = std::move(caption);
+  if (frame) {
+    // The layout flips y: the frame's top-left on the page is the picture's (xmin, ymax).
+    const Point2 a = page_point(out.layout, {frame->xmin, frame->ymax});
+    const Point2 b = page_point(out.layout, {frame->xmax, frame->ymin});
+    out.page.border = Rect2{a.x, a.y, b.x, b.y};
+  }
+  const int hidden_pen = o.hidden_pen ? checked_pen(*o.hidden_pen) : 0;  // 0: the object's pen
+  std::vector<PlotPiece> pieces;
+  pieces.reserve(segments.size());
+  for (const VisibleSegment& s : segments) {
+    if (!s.hidden) ++out.visible_segments;
+    if (s.hidden && !o.include_hidden) continue;
+    const int object_pen = s.object < o.object_pens.size() ? checked_pen(o.object_pens[s.object]) : 1;
+    PlotPiece p;
+    p.a = page_point(out.layout, s.s0);
+    p.b = page_point(out.layout, s.s1);
+    p.pen = s.hidden && hidden_pen > 0 ? hidden_pen : object_pen;
+    p.layer = s.hidden ? StrokeLayer::Hidden : StrokeLayer::Visible;
+    pieces.push_back(p);
+  }
+  for (const PageText& text : o.texts)
+    add_strokes(stroke_text(text.text, text.at, text.size_mm), checked_pen(text.pen), pieces);
+  if (o.caption_as_strokes && !out.page.caption.empty()) {
+    add_caption(out.page.caption, out.page, o.reach_margin_mm, pieces);
+    out.page.caption.clear();  // drawn: no device prints it again
+  }
+  PenPlan plan = plan_pen_strokes(pieces, o.plan);
+  if (o.hidden_dashes && o.include_hidden) dash_hidden_strokes(plan, *o.hidden_dashes, o.plan);
+  out.page.strokes = std::move(plan.strokes);
+  out.stats = plan.stats;
+  return out;
+}
+
+}  // namespace hlr

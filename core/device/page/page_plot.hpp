@@ -1,0 +1,64 @@
+// One frame's visible set laid out on its page and pen-planned: the PlotPage every device draws, the
+// layout that put it there (for JSON readers mapping picture to page) and the plan's statistics.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/device/page/page_layout.hpp"
+#include "core/device/page/plot_page.hpp"
+#include "core/geometry/rect2.hpp"
+#include "core/hlr/visible_segment.hpp"
+#include "core/plan/hidden_dashes.hpp"
+#include "core/plan/pen_plan.hpp"
+
+namespace hlr {
+
+// Single-stroke text placed on the page (a `label ... at page (x, y)`): its baseline starts at `at`.
+struct PageText {
+  std::string text;
+  Point2 at;             // page mm, top-left, y down
+  double size_mm = 3.5;  // capitals' height
+  int pen = 1;
+};
+
+struct PagePlotOptions {
+  PageSpec spec;                  // paper, margins, explicit scale
+  std::vector<int> object_pens;   // by VisibleSegment::object; objects past the end use pen 1
+  std::optional<int> hidden_pen;  // pen of hidden pieces; unset: the object's pen
+  bool include_hidden = false;    // hidden pieces are planned (and drawn) only when on
+  PlanOptions plan;
+  // The caption as single-stroke text (core/device/page/stroke_text.hpp) in pen 1, planned with the drawing,
+  // instead of a string the device prints (plotters, and --text stroke), in the bottom margin.
+  bool caption_as_strokes = false;
+  // The pen reaches no closer to the sheet's edge (DevicePlanning::min_margin_mm).
+  double reach_margin_mm = 0;
+  std::vector<PageText> texts;  // drawn and planned with the rest
+  // What the layout fits instead of the frame or the pieces: fixed before labels were added, so that
+  // they never move the drawing.
+  std::optional<Rect2> extent;
+  // Plotters: hidden strokes cut into pen-down dashes of this pattern after planning (they have no
+  // dashed line of their own); unset: hidden strokes stay whole (the cairo devices dash them as they draw).
+  std::optional<DashPattern> hidden_dashes;
+};
+
+// The caption's size in stroke text: about the 10 pt of the printed caption.
+inline constexpr double kCaptionCapHeightMm = 2.5;
+// The bottom margin a stroke caption needs beyond the pen's reach: descenders, caps and a gap above them.
+inline constexpr double kCaptionBandMm = kCaptionCapHeightMm * (1 + 7.0 / 21.0) + 1;
+
+struct PagePlot {
+  PlotPage page;
+  PageLayout layout;
+  PlanStats stats;
+  std::size_t visible_segments = 0;  // visible pieces given (before snapping and merging)
+};
+
+// Fits the drawing (the camera frame when there is one, else the pieces) to the page, maps every piece
+// to page millimetres and plans the strokes. Throws DeviceError for a bad page, a non-finite coordinate or
+// a pen outside 1..255.
+PagePlot plot_page(const std::vector<VisibleSegment>& segments, const std::optional<Rect2>& frame,
+                   std::string caption, const PagePlotOptions& options);
+
+}  // namespace hlr

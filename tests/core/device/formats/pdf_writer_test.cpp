@@ -1,0 +1,121 @@
+// The PDF writer, read back by poppler: metadata in any script, captions, pages in order, the same bytes
+// for the same pages and date, and the errors. (Strokes at the right millimetres: cairo_device_test's
+// PdfStrokesWhereThePageSays rasterises it against the PNG device.)
+#include "core/device/formats/pdf_writer.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "core/device/page/atomic_file.hpp"
+#include "tests/support/temp_dir.hpp"
+
+namespace hlr {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string output_of(const std::string& command) {
+  std::string out;
+  FILE* p = ::popen((command + " 2>&1").c_str(), "r");
+  if (!p) return out;
+  char buf[4096];
+  for (std::size_t n; (n = std::fread(buf, 1, sizeof buf, p)) > 0;) out.append(buf, n);
+  EXPECT_EQ(::pclose(p), 0) << command << ": " << out;
+  return out;
+}
+
+std::string bytes_of(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+PlotPage page_with(std::string caption) {
+  PlotPage page;
+  page.width_mm = 210;
+  page.height_mm = 148;
+  page.margin_mm = 10;
+  page.border = Rect2{10, 10, 200, 130};
+  page.strokes.push_back({{{20, 20}, {190, 20}, {190, 120}}, 1, StrokeLayer::Visible});
+  page.strokes.push_back({{{20, 120}, {100, 70}}, 2, StrokeLayer::Hidden});
+  page.strokes.push_back({{{50, 50}}, 1, StrokeLayer::Visible});  // a dot
+  page.caption = std::move(caption);
+  return page;
+}
+
+class PdfWriterTest : public ::testing::Test {
+ protected:
+  const test::TempDir scratch_{std::string("pdf-writer-") +
+                               ::testing::UnitTest::GetInstance()->current_test_info()->name()};
+  const fs::path dir_ = scratch_.path();
+};
+
+TEST_F(PdfWriterTest, MetadataInAnyScriptAndAFixedDate) {
+  PdfOptions o;
+  o.title = "Zahnräder – Ansicht 3 ✓";
+  o.creation_date = "2023-11-14T22:13:20Z";
+  const fs::path target = dir_ / "meta.pdf";
+  write_pdf(target, {page_with("")}, o);
+  const std::string info = output_of("pdfinfo '" + target.string() + "'");
+  EXPECT_NE(info.find("Title:           Zahnräder – Ansicht 3 ✓\n"), std::string::npos) << info;
+  EXPECT_NE(info.find("Creator:         hlrscript\n"), std::string::npos) << info;
+  EXPECT_NE(info.find("CreationDate:    Tue Nov 14 22:13:20 2023 UTC"), std::string::npos) << info;
+  EXPECT_NE(info.find("Page size:       595.276 x 419.528 pts"), std::string::npos) << info;
+  // The same pages, options and date: the same bytes.
+  write_pdf(dir_ / "again.pdf", {page_with("")}, o);
+  EXPECT_EQ(bytes_of(target), bytes_of(dir_ / "again.pdf"));
+}
+
+TEST_F(PdfWriterTest, CaptionsReadBackPageByPage) {
+  const fs::path target = dir_ / "pages.pdf";
+  std::vector<PlotPage> pages;
+  for (int k = 0; k < 40; ++k) pages.push_back(page_with("Seite " + std::to_string(k) + " (größer) \\ fin"));
+  write_pdf(target, pages, {});
+  const std::string info = output_of("pdfinfo '" + target.string() + "'");
+  EXPECT_NE(info.find("Pages:           40\n"), std::string::npos) << info;
+  const std::string text = output_of("pdftotext -layout '" + target.string() + "' -");
+  std::size_t last = 0;
+  for (int k = 0; k < 40; ++k) {
+    const std::size_t at = text.find("Seite " + std::to_string(k) + " (größer) \\ fin");
+    ASSERT_NE(at, std::string::npos) << k << ":\n" << text.substr(0, 400);
+    if (k > 0) {
+      EXPECT_GT(at, last) << k;
+    }
+    last = at;
+  }
+}
+
+TEST_F(PdfWriterTest, WithoutDecorationsThereIsNoText) {
+  PdfOptions o;
+  o.decorations = false;
+  const fs::path target = dir_ / "plain.pdf";
+  write_pdf(target, {page_with("not printed")}, o);
+  EXPECT_EQ(output_of("pdftotext '" + target.string() + "' -").find("not printed"), std::string::npos);
+}
+
+TEST_F(PdfWriterTest, BadPagesAreRefusedAndNothingIsWritten) {
+  PlotPage bad = page_with("");
+  bad.strokes[0].points[1].x = std::nan("");
+  const fs::path target = dir_ / "bad.pdf";
+  try {
+    write_pdf(target, {page_with(""), bad}, {});
+    FAIL();
+  } catch (const DeviceError& e) {
+    EXPECT_EQ(std::string(e.what()),
+              "cannot write '" + target.string() + "': page 2: stroke 1 has a non-finite point");
+  }
+  EXPECT_THROW(write_pdf(target, {}, {}), DeviceError);
+  PlotPage roomless = page_with("");
+  roomless.margin_mm = 80;
+  EXPECT_THROW(write_pdf(target, {roomless}, {}), DeviceError);
+  EXPECT_TRUE(fs::is_empty(dir_));
+}
+
+}  // namespace
+}  // namespace hlr

@@ -1,0 +1,53 @@
+#!/usr/bin/env bash
+# The heap on transparent huge pages (runtime/base/allocator_policy.hpp): a process calling
+# heap_on_huge_pages() starts again once with glibc.malloc.hugetlb=1 added to GLIBC_TUNABLES, keeps
+# what the user set there, leaves a hugetlb setting of the user's alone and never restarts twice; under
+# AddressSanitizer it does nothing. Then hlrscript itself: a REPL's own environment (/proc/PID/environ).
+# usage: allocator_policy.sh PROBE HLRSCRIPT WORKDIR SANITIZED(0|1)
+set -euo pipefail
+probe=$1 hlrscript=$2 work=$3 sanitized=$4
+rm -rf "$work" && mkdir -p "$work"
+fail() { echo "allocator_policy: $*" >&2; exit 1; }
+
+# check GIVEN EXPECTED STARTS: the probe run with GLIBC_TUNABLES=GIVEN (unset when empty).
+check() {
+  local given=$1 expected=$2 starts=$3 seen count
+  if [ -n "$given" ]; then
+    seen=$(GLIBC_TUNABLES=$given "$probe" 2>"$work/err")
+  else
+    seen=$(env -u GLIBC_TUNABLES "$probe" 2>"$work/err")
+  fi
+  count=$(grep -c '^start$' "$work/err")
+  [ "$seen" = "$expected" ] || fail "GLIBC_TUNABLES='$given' became '$seen', expected '$expected'"
+  [ "$count" = "$starts" ] || fail "GLIBC_TUNABLES='$given': $count starts, expected $starts"
+}
+
+if [ "$sanitized" = 1 ]; then
+  check "" "" 1
+  check "glibc.malloc.arena_max=4" "glibc.malloc.arena_max=4" 1
+  echo "allocator_policy: sanitized build, environment left alone"
+  exit 0
+fi
+check "" "glibc.malloc.hugetlb=1" 2
+check "glibc.malloc.arena_max=4" "glibc.malloc.arena_max=4:glibc.malloc.hugetlb=1" 2
+check "glibc.malloc.hugetlb=0" "glibc.malloc.hugetlb=0" 1
+check "glibc.malloc.hugetlb=1" "glibc.malloc.hugetlb=1" 1
+
+# hlrscript calls it: a REPL, once it has answered a line, runs with the setting.
+fifo="$work/in" out="$work/out"
+mkfifo "$fifo"
+env -u GLIBC_TUNABLES "$hlrscript" repl <"$fifo" >"$out" 2>&1 &
+pid=$!
+exec 3>"$fifo"
+echo "6 * 7" >&3
+for _ in $(seq 200); do
+  grep -q 42 "$out" && break
+  sleep 0.05
+done
+grep -q 42 "$out" || fail "the REPL did not answer: $(cat "$out")"
+seen=$(tr '\0' '\n' <"/proc/$pid/environ" | sed -n 's/^GLIBC_TUNABLES=//p')
+echo ":quit" >&3
+exec 3>&-
+wait "$pid" || true
+[ "$seen" = "glibc.malloc.hugetlb=1" ] || fail "hlrscript runs with GLIBC_TUNABLES='$seen'"
+echo "allocator_policy: ok"
