@@ -1,7 +1,10 @@
 // Where faces of one solid cross: an assembly exported as one mesh, a scan that folds through itself.
 // Pairs of faces that may meet come from a uniform grid over the faces' boxes (cells about the size of
 // a typical face, so the work follows the number of nearby pairs, not the square of the face count);
-// each pair is then rejected cheaply by its planes or solved exactly as two solids' faces are.
+// each pair is then rejected cheaply by its planes or solved exactly as two solids' faces are. Faces that
+// share an edge meet along it and nowhere else; faces that share one vertex may still pass through each
+// other from that vertex on (a fold through a fan, two sheets welded at a point), which for triangles is
+// decided by exact orientation predicates (corner_crossing).
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -9,6 +12,7 @@
 #include <vector>
 
 #include "core/geometry/box3.hpp"
+#include "core/geometry/exact_predicates.hpp"
 #include "core/parallel.hpp"
 #include "core/solid/face_crossing.hpp"
 #include "core/solid/solid.hpp"
@@ -98,7 +102,14 @@ class Finder {
     if (a > b) std::swap(a, b);
     const FaceInfo& ia = info_[a];
     const FaceInfo& ib = info_[b];
-    if (!ia.box.overlaps(ib.box, tol_) || share_a_vertex(a, b)) return;
+    if (!ia.box.overlaps(ib.box, tol_)) return;
+    VertexIndex corner = 0;
+    const int shared = shared_vertices(a, b, corner);
+    if (shared >= 2) return;  // neighbours along an edge (or more): they meet there, not across
+    if (shared == 1 && is_triangle(a) && is_triangle(b)) {
+      corner_crossing(a, b, corner, part);
+      return;
+    }
     // A face its solid's options let off plane (legacy data) is only known to within its warp: crossings
     // that small are noise.
     const double tol = tol_ + warp_[a] + warp_[b];
@@ -239,28 +250,79 @@ class Finder {
     }
   }
 
-  bool share_a_vertex(FaceIndex a, FaceIndex b) const {
+  bool is_triangle(FaceIndex f) const {
+    return info_[f].small() && solid_.faces[f].rings[0].vertices.size() == 3;
+  }
+
+  // How many vertices faces a and b share, counting to two (an edge); `one` is a shared vertex.
+  int shared_vertices(FaceIndex a, FaceIndex b, VertexIndex& one) const {
     const FaceInfo& ia = info_[a];
     const FaceInfo& ib = info_[b];
-    if (ia.small() && ib.small()) {  // all sixteen, without branches: most pairs met are neighbours
-      bool shared = false;
-      for (int i = 0; i < 4; ++i)
-        for (int j = 0; j < 4; ++j) shared |= ia.v[i] == ib.v[j];
-      return shared;
+    int count = 0;
+    auto found = [&](VertexIndex v) {
+      one = v;
+      return ++count >= 2;
+    };
+    if (ia.small() && ib.small()) {  // most pairs met are neighbours: the padded four against four
+      for (int i = 0; i < 4; ++i) {
+        if (i > 0 && ia.v[i] == ia.v[0]) continue;  // padding repeats the first vertex
+        const VertexIndex v = ia.v[i];
+        if ((v == ib.v[0] || v == ib.v[1] || v == ib.v[2] || v == ib.v[3]) && found(v)) return count;
+      }
+      return count;
     }
     if (ia.small() || ib.small()) {  // a small face against a large one: look its few vertices up
       const FaceInfo& small = ia.small() ? ia : ib;
       const std::vector<VertexIndex>& sorted = big_[static_cast<std::size_t>((ia.small() ? ib : ia).v[1])];
-      return std::any_of(small.v, small.v + 4,
-                         [&](VertexIndex v) { return std::binary_search(sorted.begin(), sorted.end(), v); });
+      for (int i = 0; i < 4; ++i) {
+        if (i > 0 && small.v[i] == small.v[0]) continue;
+        if (std::binary_search(sorted.begin(), sorted.end(), small.v[i]) && found(small.v[i])) return count;
+      }
+      return count;
     }
     const std::vector<VertexIndex>&sa = big_[static_cast<std::size_t>(ia.v[1])],
           &sb = big_[static_cast<std::size_t>(ib.v[1])];
     for (std::size_t i = 0, j = 0; i < sa.size() && j < sb.size();) {  // merge the two sorted lists
-      if (sa[i] == sb[j]) return true;
-      sa[i] < sb[j] ? ++i : ++j;
+      if (sa[i] == sb[j]) {
+        if (found(sa[i])) return count;
+        ++i, ++j;
+      } else {
+        sa[i] < sb[j] ? ++i : ++j;
+      }
     }
-    return false;
+    return count;
+  }
+
+  // Triangles a and b share only vertex V; their other vertices are A1, A2 and B1, B2. The planes meet in
+  // a line L through V. L enters triangle a from V exactly when A1 and A2 lie strictly on opposite sides
+  // of b's plane (it then leaves through A1A2 at Xa), and enters b when B1 and B2 lie strictly on opposite
+  // sides of a's plane (leaving through B1B2 at Xb). The triangles cross when both hold and Xa and Xb lie
+  // on the same side of V — the same side of the plane through V, A1, B1, which works out to
+  // sign(orient(V, B1, B2, A1)) = −sign(orient(V, A1, A2, B1)). Every decision is one of four exact
+  // orientations of input points; only the end point, the nearer of Xa and Xb, is computed.
+  void corner_crossing(FaceIndex a, FaceIndex b, VertexIndex v, Part& part) const {
+    auto others = [&](FaceIndex f, Point3& p, Point3& q) {
+      const auto& ring = solid_.faces[f].rings[0].vertices;
+      const std::size_t i = static_cast<std::size_t>(std::find(ring.begin(), ring.end(), v) - ring.begin());
+      p = solid_.vertices[ring[(i + 1) % 3]];
+      q = solid_.vertices[ring[(i + 2) % 3]];
+    };
+    const Point3 V = solid_.vertices[v];
+    Point3 a1, a2, b1, b2;
+    others(a, a1, a2);
+    others(b, b1, b2);
+    const int g1 = orient3d(V, b1, b2, a1), g2 = orient3d(V, b1, b2, a2);
+    if (g1 * g2 >= 0) return;
+    const int h1 = orient3d(V, a1, a2, b1), h2 = orient3d(V, a1, a2, b2);
+    if (h1 * h2 >= 0 || g1 != -h1) return;
+    // Where L leaves each triangle, from the same determinants' values (their signs are known).
+    const double vg1 = orient3d_value(V, b1, b2, a1), vg2 = orient3d_value(V, b1, b2, a2);
+    const double vh1 = orient3d_value(V, a1, a2, b1), vh2 = orient3d_value(V, a1, a2, b2);
+    const Point3 xa = lerp(a1, a2, std::clamp(vg1 / (vg1 - vg2), 0.0, 1.0));
+    const Point3 xb = lerp(b1, b2, std::clamp(vh1 / (vh1 - vh2), 0.0, 1.0));
+    const Point3 end = distance(V, xa) <= distance(V, xb) ? xa : xb;
+    if (distance(V, end) <= tol_) return;
+    part.found.push_back({V, end, a, b});
   }
 
   const Solid& solid_;
@@ -271,8 +333,8 @@ class Finder {
 };
 
 std::vector<SelfCrossing> find_self_crossings(const Solid& solid) {
-  // Four faces at least: fewer cannot hold two that share no vertex and cross.
-  if (solid.faces.size() < 4 || solid.planes.size() != solid.faces.size()) return {};
+  // Two faces at least (two triangles may cross through their one shared vertex).
+  if (solid.faces.size() < 2 || solid.planes.size() != solid.faces.size()) return {};
   Finder finder(solid);
   // Below a few dozen faces every pair is cheaper than building the grid.
   std::vector<SelfCrossing> found = solid.faces.size() <= 48 ? finder.all_pairs() : finder.grid_pairs();

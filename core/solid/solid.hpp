@@ -64,7 +64,8 @@ struct SolidEdge {
 };
 
 // A piece of the line where two faces of one solid cross (parts of one mesh that interpenetrate), in the
-// solid's coordinates. Faces that share a vertex or an edge are not said to cross.
+// solid's coordinates. Faces that share an edge are not said to cross; faces that share one vertex cross
+// where they pass through each other from it (p0 is then that vertex).
 struct SelfCrossing {
   Point3 p0, p1;
   FaceIndex face0 = kNoFace, face1 = kNoFace;  // face0 < face1

@@ -333,13 +333,15 @@ CheckReport check_visible_not_missing(const Scene& scene, const RayCaster& oracl
 }
 
 namespace {
-// Whether two faces of one solid have a vertex in common (then they meet there, and do not cross).
-bool share_vertex(const Face& x, const Face& y) {
+// How many vertices two faces of one solid have in common. Two or more: they meet along an edge and do
+// not cross. One: they may still pass through each other from that vertex on.
+int shared_vertices(const Face& x, const Face& y) {
+  int count = 0;
   for (const Ring& rx : x.rings)
     for (VertexIndex u : rx.vertices)
       for (const Ring& ry : y.rings)
-        if (std::find(ry.vertices.begin(), ry.vertices.end(), u) != ry.vertices.end()) return true;
-  return false;
+        if (std::find(ry.vertices.begin(), ry.vertices.end(), u) != ry.vertices.end()) ++count;
+  return count;
 }
 }  // namespace
 
@@ -370,13 +372,12 @@ CheckReport check_intersections(const Scene& scene, const RayCaster& oracle, con
       }
     }
   }
-  // (c2) visible crossings of faces of two closed solids, or of two faces of one closed solid that share
-  // no vertex (parts of one mesh passing through each other), are drawn.
+  // (c2) visible crossings of faces of two solids, or of two faces of one solid that share at most one
+  // vertex (parts of one mesh passing through each other, a fold through a fan), open or closed, are drawn.
   for (std::uint32_t a = 0; a < n_objects; ++a)
     for (std::uint32_t b = a; b < n_objects; ++b) {
       const Solid& sa = *scene.objects[a].solid;
       const Solid& sb = *scene.objects[b].solid;
-      if (!sa.closed || !sb.closed) continue;
       std::vector<std::size_t> pair_pieces;
       for (std::size_t i = 0; i < result.segments.size(); ++i) {
         const VisibleSegment& s = result.segments[i];
@@ -386,7 +387,7 @@ CheckReport check_intersections(const Scene& scene, const RayCaster& oracle, con
       }
       for (std::uint32_t fa = 0; fa < sa.faces.size(); ++fa)
         for (std::uint32_t fb = a == b ? fa + 1 : 0; fb < sb.faces.size(); ++fb) {
-          if (a == b && share_vertex(sa.faces[fa], sb.faces[fb])) continue;
+          if (a == b && shared_vertices(sa.faces[fa], sb.faces[fb]) >= 2) continue;
           const Vector3 na = oracle.normal(a, fa), nb = oracle.normal(b, fb);
           const Vector3 dir = cross(na, nb);
           if (length(dir) < 1e-6) continue;  // (nearly) parallel planes: no transversal crossing

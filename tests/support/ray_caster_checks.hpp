@@ -8,9 +8,9 @@
 //       edges seen end-on, shorter than 10 such distances on the picture, are skipped) — or, where another
 //       solid's edge lies on it (drawn once), by a visible piece of any object through that world point;
 //   (c) intersection lines: every Intersection piece lies on a face of both its objects and is not Hidden;
-//       and, between closed solids and within one closed solid (faces sharing no vertex), every sampled
-//       point where two faces cross strictly inside both that the oracle calls Visible is covered by an
-//       Intersection piece of that pair of objects.
+//       and, between solids and within one solid (faces sharing at most one vertex), open or closed, every
+//       sampled point where two faces cross strictly inside both that the oracle calls Visible is covered
+//       by an Intersection piece of that pair of objects.
 #pragma once
 
 #include <array>

@@ -1,7 +1,7 @@
 // Parts of one mesh that pass through each other (an assembly exported as one file, a scan folding
 // through itself): their intersection lines are drawn as two solids' are, and hide correctly. Checked
 // against the ray-casting oracle (tests/support), whose search for crossings within one solid is its own
-// brute force over every pair of faces that share no vertex.
+// brute force over every pair of faces that share at most one vertex.
 //   hlr_core_tests --gtest_filter='*SelfCrossing*'
 #include <gtest/gtest.h>
 

@@ -1,0 +1,23 @@
+// Orientation predicates that are never wrong: the sign of a determinant of input coordinates, computed in
+// floating point with a certified error bound, and exactly (GMP rationals, which hold every double
+// exactly) when the bound cannot tell the sign. No tolerance is involved: a zero means exactly coplanar
+// (collinear). The bounds are Shewchuk's (1997) for this order of evaluation, rounded up; the exact path
+// is taken only where they fail, so the cost on ordinary data is that of the floating-point formula.
+#pragma once
+
+#include "core/geometry/vector.hpp"
+
+namespace hlr {
+
+// Sign of ((b − a) × (c − a)) · (d − a): +1 when d lies on the side the normal of the triangle a, b, c
+// (counter-clockwise) points to, −1 on the other side, 0 when the four points are coplanar.
+int orient3d(Point3 a, Point3 b, Point3 c, Point3 d);
+
+// Sign of (b − a) × (c − a): +1 when a, b, c turn counter-clockwise, −1 clockwise, 0 when collinear.
+int orient2d(Point2 a, Point2 b, Point2 c);
+
+// The same determinant of orient3d, its floating-point value (for constructions whose topology the sign
+// already decided: the value is within Shewchuk's bound of the exact one).
+double orient3d_value(Point3 a, Point3 b, Point3 c, Point3 d);
+
+}  // namespace hlr
