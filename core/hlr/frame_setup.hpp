@@ -64,7 +64,8 @@ struct FrameSetup {
   double length_tolerance = 0;           // view-space
   Rect2 picture_bounds = Rect2::none();  // of all candidates
   // Per object, kept for the intersection candidates: each face's facing (see face_facing) and whether
-  // the object is culled whole (a closed solid wholly in front of the eye shows only its front faces).
+  // the object is culled whole (a closed solid wholly in front of the eye, not passing through itself,
+  // shows only its front faces).
   std::vector<std::vector<std::int8_t>> facing;
   std::vector<char> cull;
 };
