@@ -166,8 +166,8 @@ FrameResult render_frame(const Scene& scene, const Camera& camera, const HlrOpti
       throw FrameTimedOut();
   };
   check_cancel();
-  // Where a solid passes through itself is searched for once per solid (and kept with it). The edges'
-  // visibility does not need it, so the search runs beside their preparation and examination and takes
+  // Where a solid passes through itself is searched for once per solid (and kept with it). An open
+  // solid's edges do not need it, so the search runs beside their preparation and examination and takes
   // up what of that work runs on one core; the lines it finds are examined last. Only in the caller's
   // arena (threads 0): one thread means this thread only.
   tbb::task_group crossing_search;
@@ -187,6 +187,10 @@ FrameResult render_frame(const Scene& scene, const Camera& camera, const HlrOpti
       }
     }
   } search{crossing_search, options.intersection_lines && options.threads == 0};
+  // Except a closed solid's: whether its back faces may be culled depends on whether it passes through
+  // itself (frame_setup.cpp), so its search comes first.
+  for (const SceneObject& o : scene.objects)
+    if (o.solid->closed) o.solid->self_crossings();
   if (search.armed)
     crossing_search.run([&scene] {
       for (const SceneObject& o : scene.objects) o.solid->self_crossings();

@@ -103,13 +103,9 @@ class Finder {
     const FaceInfo& ia = info_[a];
     const FaceInfo& ib = info_[b];
     if (!ia.box.overlaps(ib.box, tol_)) return;
-    VertexIndex corner = 0;
-    const int shared = shared_vertices(a, b, corner);
+    const int shared = shared_vertices(a, b);
     if (shared >= 2) return;  // neighbours along an edge (or more): they meet there, not across
-    if (shared == 1 && is_triangle(a) && is_triangle(b)) {
-      corner_crossing(a, b, corner, part);
-      return;
-    }
+    if (shared == 1 && is_triangle(a) && is_triangle(b)) return;  // fan_pairs decides these
     // A face its solid's options let off plane (legacy data) is only known to within its warp: crossings
     // that small are noise.
     const double tol = tol_ + warp_[a] + warp_[b];
@@ -127,6 +123,49 @@ class Finder {
     for (FaceIndex a = 0; a < n; ++a)
       for (FaceIndex b = a + 1; b < n; ++b) pair(a, b, part);
     return std::move(part.found);
+  }
+
+  // Triangles that share one vertex, met vertex by vertex: each vertex's fan is read once, where the grid
+  // would fetch the same few triangles again for every pair. Vertices are shared out over the cores.
+  std::vector<SelfCrossing> fan_pairs() const {
+    const std::size_t nv = solid_.vertices.size(), nf = info_.size();
+    std::vector<std::uint32_t> first(nv + 1, 0);
+    for (std::size_t f = 0; f < nf; ++f)
+      if (is_triangle(static_cast<FaceIndex>(f)))
+        for (int k = 0; k < 3; ++k) ++first[info_[f].v[k] + 1];
+    for (std::size_t v = 0; v < nv; ++v) first[v + 1] += first[v];
+    std::vector<FaceIndex> fan(first[nv]);
+    std::vector<std::uint32_t> fill(first.begin(), first.end() - 1);
+    for (std::size_t f = 0; f < nf; ++f)
+      if (is_triangle(static_cast<FaceIndex>(f)))
+        for (int k = 0; k < 3; ++k) fan[fill[info_[f].v[k]]++] = static_cast<FaceIndex>(f);
+    constexpr std::size_t kChunk = 8192;
+    std::vector<Part> parts((nv + kChunk - 1) / kChunk);
+    parallel_chunks(parts.size(), threads_for(fan.size(), 50000, 0), [&](std::size_t k) {
+      Part& part = parts[k];
+      std::vector<FanTriangle> round;
+      for (std::size_t v = k * kChunk; v < std::min(nv, (k + 1) * kChunk); ++v) {
+        if (first[v + 1] - first[v] < 2) continue;
+        round.clear();
+        for (std::uint32_t i = first[v]; i < first[v + 1]; ++i) {
+          const VertexIndex* ring = info_[fan[i]].v;
+          const int at = ring[0] == v ? 0 : (ring[1] == v ? 1 : 2);
+          const VertexIndex i1 = ring[(at + 1) % 3], i2 = ring[(at + 2) % 3];
+          round.push_back({fan[i], i1, i2, solid_.vertices[i1], solid_.vertices[i2], solid_.planes[fan[i]]});
+        }
+        const Point3 V = solid_.vertices[v];
+        for (std::size_t i = 0; i < round.size(); ++i)
+          for (std::size_t j = i + 1; j < round.size(); ++j) {
+            const FanTriangle &x = round[i], &y = round[j];
+            // Triangles sharing a second vertex share an edge: they meet along it, not across.
+            if (x.i1 == y.i1 || x.i1 == y.i2 || x.i2 == y.i1 || x.i2 == y.i2) continue;
+            corner_crossing(x, y, V, part);
+          }
+      }
+    });
+    std::vector<SelfCrossing> found;
+    for (Part& part : parts) found.insert(found.end(), part.found.begin(), part.found.end());
+    return found;
   }
 
   // The grid: cells of the median face size (at least 1/1000 of the solid's size on each axis, so cell
@@ -250,42 +289,37 @@ class Finder {
     }
   }
 
-  bool is_triangle(FaceIndex f) const {
-    return info_[f].small() && solid_.faces[f].rings[0].vertices.size() == 3;
-  }
+  // A triangle's fourth slot repeats its first vertex (a quad's holds its own fourth).
+  bool is_triangle(FaceIndex f) const { return info_[f].small() && info_[f].v[3] == info_[f].v[0]; }
 
-  // How many vertices faces a and b share, counting to two (an edge); `one` is a shared vertex.
-  int shared_vertices(FaceIndex a, FaceIndex b, VertexIndex& one) const {
+  // How many vertices faces a and b share, counting to two (an edge).
+  int shared_vertices(FaceIndex a, FaceIndex b) const {
     const FaceInfo& ia = info_[a];
     const FaceInfo& ib = info_[b];
-    int count = 0;
-    auto found = [&](VertexIndex v) {
-      one = v;
-      return ++count >= 2;
-    };
-    if (ia.small() && ib.small()) {  // most pairs met are neighbours: the padded four against four
+    // Most pairs met are neighbours: the padded four against four, without branches.
+    if (ia.small() && ib.small()) {
+      int count = 0;
       for (int i = 0; i < 4; ++i) {
-        if (i > 0 && ia.v[i] == ia.v[0]) continue;  // padding repeats the first vertex
         const VertexIndex v = ia.v[i];
-        if ((v == ib.v[0] || v == ib.v[1] || v == ib.v[2] || v == ib.v[3]) && found(v)) return count;
+        const bool own = i == 0 || v != ia.v[0];  // padding repeats the first vertex
+        count += own && (v == ib.v[0] || v == ib.v[1] || v == ib.v[2] || v == ib.v[3]);
       }
-      return count;
+      return std::min(count, 2);
     }
+    int count = 0;
     if (ia.small() || ib.small()) {  // a small face against a large one: look its few vertices up
       const FaceInfo& small = ia.small() ? ia : ib;
       const std::vector<VertexIndex>& sorted = big_[static_cast<std::size_t>((ia.small() ? ib : ia).v[1])];
-      for (int i = 0; i < 4; ++i) {
-        if (i > 0 && small.v[i] == small.v[0]) continue;
-        if (std::binary_search(sorted.begin(), sorted.end(), small.v[i]) && found(small.v[i])) return count;
-      }
+      for (int i = 0; i < 4 && count < 2; ++i)
+        count += (i == 0 || small.v[i] != small.v[0]) &&
+                 std::binary_search(sorted.begin(), sorted.end(), small.v[i]);
       return count;
     }
     const std::vector<VertexIndex>&sa = big_[static_cast<std::size_t>(ia.v[1])],
           &sb = big_[static_cast<std::size_t>(ib.v[1])];
-    for (std::size_t i = 0, j = 0; i < sa.size() && j < sb.size();) {  // merge the two sorted lists
+    for (std::size_t i = 0, j = 0; i < sa.size() && j < sb.size() && count < 2;) {  // merge the sorted lists
       if (sa[i] == sb[j]) {
-        if (found(sa[i])) return count;
-        ++i, ++j;
+        ++count, ++i, ++j;
       } else {
         sa[i] < sb[j] ? ++i : ++j;
       }
@@ -293,24 +327,28 @@ class Finder {
     return count;
   }
 
-  // Triangles a and b share only vertex V; their other vertices are A1, A2 and B1, B2. The planes meet in
-  // a line L through V. L enters triangle a from V exactly when A1 and A2 lie strictly on opposite sides
-  // of b's plane (it then leaves through A1A2 at Xa), and enters b when B1 and B2 lie strictly on opposite
-  // sides of a's plane (leaving through B1B2 at Xb). The triangles cross when both hold and Xa and Xb lie
-  // on the same side of V — the same side of the plane through V, A1, B1, which works out to
-  // sign(orient(V, B1, B2, A1)) = −sign(orient(V, A1, A2, B1)). Every decision is one of four exact
-  // orientations of input points; only the end point, the nearer of Xa and Xb, is computed.
-  void corner_crossing(FaceIndex a, FaceIndex b, VertexIndex v, Part& part) const {
-    auto others = [&](FaceIndex f, Point3& p, Point3& q) {
-      const auto& ring = solid_.faces[f].rings[0].vertices;
-      const std::size_t i = static_cast<std::size_t>(std::find(ring.begin(), ring.end(), v) - ring.begin());
-      p = solid_.vertices[ring[(i + 1) % 3]];
-      q = solid_.vertices[ring[(i + 2) % 3]];
+  // One triangle of a vertex's fan, read once for all its pairs: its plane and its other two vertices
+  // (ring order after the fan's vertex).
+  struct FanTriangle {
+    FaceIndex face;
+    VertexIndex i1, i2;
+    Point3 p1, p2;
+    Plane plane;
+  };
+
+  void corner_crossing(const FanTriangle& a, const FanTriangle& b, Point3 V, Part& part) const {
+    // Most neighbours round a vertex lie wholly to one side of each other's planes, farther than the
+    // coincidence tolerance — far beyond the rounding of a triangle's plane, so the exact signs agree.
+    auto one_side = [&](const Plane& plane, Point3 p, Point3 q) {
+      const double dp = plane.signed_distance(p), dq = plane.signed_distance(q);
+      return (dp > tol_ && dq > tol_) || (dp < -tol_ && dq < -tol_);
     };
-    const Point3 V = solid_.vertices[v];
-    Point3 a1, a2, b1, b2;
-    others(a, a1, a2);
-    others(b, b1, b2);
+    if (one_side(b.plane, a.p1, a.p2) || one_side(a.plane, b.p1, b.p2)) return;
+    // Coplanar neighbours (a flat region's fan: most pairs of a CAD mesh) have no line to cross along, as
+    // face_crossings rules for every pair.
+    const Vector3 line = cross(a.plane.normal, b.plane.normal);
+    if (dot(line, line) < Tolerance::kCoplanarAngle * Tolerance::kCoplanarAngle) return;
+    const Point3 a1 = a.p1, a2 = a.p2, b1 = b.p1, b2 = b.p2;
     const int g1 = orient3d(V, b1, b2, a1), g2 = orient3d(V, b1, b2, a2);
     if (g1 * g2 >= 0) return;
     const int h1 = orient3d(V, a1, a2, b1), h2 = orient3d(V, a1, a2, b2);
@@ -322,7 +360,7 @@ class Finder {
     const Point3 xb = lerp(b1, b2, std::clamp(vh1 / (vh1 - vh2), 0.0, 1.0));
     const Point3 end = distance(V, xa) <= distance(V, xb) ? xa : xb;
     if (distance(V, end) <= tol_) return;
-    part.found.push_back({V, end, a, b});
+    part.found.push_back({V, end, std::min(a.face, b.face), std::max(a.face, b.face)});
   }
 
   const Solid& solid_;
@@ -338,6 +376,8 @@ std::vector<SelfCrossing> find_self_crossings(const Solid& solid) {
   Finder finder(solid);
   // Below a few dozen faces every pair is cheaper than building the grid.
   std::vector<SelfCrossing> found = solid.faces.size() <= 48 ? finder.all_pairs() : finder.grid_pairs();
+  const std::vector<SelfCrossing> at_vertices = finder.fan_pairs();
+  found.insert(found.end(), at_vertices.begin(), at_vertices.end());
   // Sorted by faces, whatever order the pairs were met in; a pair's pieces keep their order.
   std::stable_sort(found.begin(), found.end(), [](const SelfCrossing& x, const SelfCrossing& y) {
     return x.face0 != y.face0 ? x.face0 < y.face0 : x.face1 < y.face1;
