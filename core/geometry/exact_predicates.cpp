@@ -16,43 +16,46 @@ constexpr double kOrient2dBound = 4 * kEpsilon;
 // Below this permanent the products may have underflowed, where the relative bound no longer holds.
 constexpr double kUnderflow = 0x1p-900;
 
-int sign_of(const mpq_class& v) { return sgn(v); }
-
 int orient3d_exact(Point3 a, Point3 b, Point3 c, Point3 d) {
   const mpq_class ax(a.x), ay(a.y), az(a.z);
   const mpq_class bx = mpq_class(b.x) - ax, by = mpq_class(b.y) - ay, bz = mpq_class(b.z) - az;
   const mpq_class cx = mpq_class(c.x) - ax, cy = mpq_class(c.y) - ay, cz = mpq_class(c.z) - az;
   const mpq_class dx = mpq_class(d.x) - ax, dy = mpq_class(d.y) - ay, dz = mpq_class(d.z) - az;
   const mpq_class det = dx * (by * cz - bz * cy) + dy * (bz * cx - bx * cz) + dz * (bx * cy - by * cx);
-  return sign_of(det);
+  return sgn(det);
 }
 
 int orient2d_exact(Point2 a, Point2 b, Point2 c) {
   const mpq_class ax(a.x), ay(a.y);
   const mpq_class det =
       (mpq_class(b.x) - ax) * (mpq_class(c.y) - ay) - (mpq_class(b.y) - ay) * (mpq_class(c.x) - ax);
-  return sign_of(det);
+  return sgn(det);
+}
+
+// The determinant of orient3d in floating point, and its permanent (the same sum of products, each
+// product's absolute value) that scales the error bound.
+struct Orient3dSum {
+  double value, permanent;
+};
+
+Orient3dSum orient3d_sum(Point3 a, Point3 b, Point3 c, Point3 d) {
+  const double bx = b.x - a.x, by = b.y - a.y, bz = b.z - a.z;
+  const double cx = c.x - a.x, cy = c.y - a.y, cz = c.z - a.z;
+  const double dx = d.x - a.x, dy = d.y - a.y, dz = d.z - a.z;
+  return {dx * (by * cz - bz * cy) + dy * (bz * cx - bx * cz) + dz * (bx * cy - by * cx),
+          std::abs(dx) * (std::abs(by * cz) + std::abs(bz * cy)) +
+              std::abs(dy) * (std::abs(bz * cx) + std::abs(bx * cz)) +
+              std::abs(dz) * (std::abs(bx * cy) + std::abs(by * cx))};
 }
 
 }  // namespace
 
-double orient3d_value(Point3 a, Point3 b, Point3 c, Point3 d) {
-  const double bx = b.x - a.x, by = b.y - a.y, bz = b.z - a.z;
-  const double cx = c.x - a.x, cy = c.y - a.y, cz = c.z - a.z;
-  const double dx = d.x - a.x, dy = d.y - a.y, dz = d.z - a.z;
-  return dx * (by * cz - bz * cy) + dy * (bz * cx - bx * cz) + dz * (bx * cy - by * cx);
-}
+double orient3d_value(Point3 a, Point3 b, Point3 c, Point3 d) { return orient3d_sum(a, b, c, d).value; }
 
 int orient3d(Point3 a, Point3 b, Point3 c, Point3 d) {
-  const double bx = b.x - a.x, by = b.y - a.y, bz = b.z - a.z;
-  const double cx = c.x - a.x, cy = c.y - a.y, cz = c.z - a.z;
-  const double dx = d.x - a.x, dy = d.y - a.y, dz = d.z - a.z;
-  const double det = dx * (by * cz - bz * cy) + dy * (bz * cx - bx * cz) + dz * (bx * cy - by * cx);
-  const double permanent = std::abs(dx) * (std::abs(by * cz) + std::abs(bz * cy)) +
-                           std::abs(dy) * (std::abs(bz * cx) + std::abs(bx * cz)) +
-                           std::abs(dz) * (std::abs(bx * cy) + std::abs(by * cx));
-  const double bound = kOrient3dBound * permanent;
+  const auto [det, permanent] = orient3d_sum(a, b, c, d);
   if (permanent > kUnderflow && std::isfinite(permanent)) {
+    const double bound = kOrient3dBound * permanent;
     if (det > bound) return 1;
     if (det < -bound) return -1;
   }

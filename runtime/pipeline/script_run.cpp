@@ -178,12 +178,12 @@ std::string creation_date_from_environment() {
   return buf;
 }
 
+}  // namespace
+
 // Load → evaluate frame 0 (animation length, camera, output name) → select frames → the frame pipeline
 // (runtime/pipeline/frame_pipeline.hpp) → report.
-// `releasable` is the same program when nothing else will evaluate it (not the REPL's): a run of frame 0
-// alone then frees its syntax tree before the hidden lines (Program::release_syntax).
-int run_program(const Program& program, const RunOptions& o, std::ostream& out, std::ostream& err,
-                Clock::time_point start, Program* releasable) {
+int run_loaded_program(const Program& program, const RunOptions& o, std::ostream& out, std::ostream& err,
+                       Program* releasable, Clock::time_point start) {
   const std::string& name = program.main().source->name();
   ProgressLine progress(err, o.progress);
   std::vector<int> asked;  // the frames selected, once known
@@ -287,8 +287,6 @@ int run_program(const Program& program, const RunOptions& o, std::ostream& out, 
   }
 }
 
-}  // namespace
-
 int run_script(const RunOptions& o, std::ostream& out, std::ostream& err,
                std::vector<std::filesystem::path>* inputs) {
   const auto start = Clock::now();
@@ -304,17 +302,12 @@ int run_script(const RunOptions& o, std::ostream& out, std::ostream& err,
   if (!program->parsed())
     print_diagnostics(err, program->syntax_errors(), program->sources());
   else
-    code = run_program(*program, o, out, err, start, program.get());
+    code = run_loaded_program(*program, o, out, err, program.get(), start);
   if (inputs) *inputs = program->sources().paths();
   if (leave_at_exit && !inputs && !left_at_exit) left_at_exit = program.release();
   return code;
 }
 
 void leave_program_at_exit() { leave_at_exit = true; }
-
-int run_loaded_program(const Program& program, const RunOptions& options, std::ostream& out,
-                       std::ostream& err, Program* releasable, Clock::time_point start) {
-  return run_program(program, options, out, err, start, releasable);
-}
 
 }  // namespace hlr::runtime
