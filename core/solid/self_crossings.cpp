@@ -103,9 +103,15 @@ class Finder {
     const FaceInfo& ia = info_[a];
     const FaceInfo& ib = info_[b];
     if (!ia.box.overlaps(ib.box, tol_)) return;
-    const int shared = shared_vertices(a, b);
+    const int shared = shared_vertices(ia, ib);
     if (shared >= 2) return;  // neighbours along an edge (or more): they meet there, not across
     if (shared == 1 && is_triangle(a) && is_triangle(b)) return;  // fan_pairs decides these
+    if (shared == 1 && ia.small() && ib.small()) {
+      // Faces round one vertex (the quads of a grid, diagonally): most lie beyond each other's planes
+      // everywhere but there, and meet at that point only.
+      const VertexIndex at = common_vertex(ia, ib);
+      if (leaves_plane_from(solid_.planes[a], ib, at) || leaves_plane_from(solid_.planes[b], ia, at)) return;
+    }
     // A face its solid's options let off plane (legacy data) is only known to within its warp: crossings
     // that small are noise.
     const double tol = tol_ + warp_[a] + warp_[b];
@@ -293,9 +299,7 @@ class Finder {
   bool is_triangle(FaceIndex f) const { return info_[f].small() && info_[f].v[3] == info_[f].v[0]; }
 
   // How many vertices faces a and b share, counting to two (an edge).
-  int shared_vertices(FaceIndex a, FaceIndex b) const {
-    const FaceInfo& ia = info_[a];
-    const FaceInfo& ib = info_[b];
+  int shared_vertices(const FaceInfo& ia, const FaceInfo& ib) const {
     // Most pairs met are neighbours: the padded four against four, without branches.
     if (ia.small() && ib.small()) {
       int count = 0;
@@ -325,6 +329,26 @@ class Finder {
       }
     }
     return count;
+  }
+
+  // The vertex two small faces share (they share one).
+  static VertexIndex common_vertex(const FaceInfo& x, const FaceInfo& y) {
+    for (VertexIndex v : x.v)
+      if (v == y.v[0] || v == y.v[1] || v == y.v[2] || v == y.v[3]) return v;
+    return x.v[0];
+  }
+
+  // Whether small face f, apart from its vertex `at`, lies beyond the coincidence tolerance on one side of
+  // the plane: it then meets the plane at `at` alone (as one_side rules for a fan's triangles).
+  bool leaves_plane_from(const Plane& plane, const FaceInfo& f, VertexIndex at) const {
+    bool above = false, below = false;
+    for (VertexIndex v : f.v) {
+      if (v == at) continue;
+      const double d = plane.signed_distance(solid_.vertices[v]);
+      below = below || d <= tol_;
+      above = above || d >= -tol_;
+    }
+    return above != below;
   }
 
   // One triangle of a vertex's fan, read once for all its pairs: its plane and its other two vertices
