@@ -23,6 +23,11 @@ struct Tolerance {
   // Two faces sharing an edge are coplanar (the edge is not drawn) when their unit normals differ by
   // less than this angle, in radians (≈ 0.0006°): catches data rounded to 6 digits, nothing visible.
   static constexpr double kCoplanarAngle = 1e-5;
+  // Two triangles whose planes meet at a smaller angle (sine of it) have their crossing constructed
+  // exactly (core/geometry/exact_crossing.hpp): in doubles the line's position errs by ~u / angle, which
+  // here would pass 1e-12 of their size. Faces of more corners are planar only to kPlanarity, and below
+  // kCoplanarAngle they keep to that rule: no line.
+  static constexpr double kExactCrossingAngle = 1e-4;
   // A positive floor for a scale or a divisor: keeps it nonzero, and is below every real length.
   static constexpr double kFloor = 1e-300;
 

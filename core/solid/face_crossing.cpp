@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/geometry/exact_crossing.hpp"
+#include "core/geometry/exact_predicates.hpp"
 #include "core/geometry/polygon2d.hpp"
 #include "core/tolerance.hpp"
 
@@ -61,6 +63,10 @@ void inside_intervals(const Solid& solid, FaceIndex f, const Plane& other_plane,
   }
 }
 
+bool is_triangle(const Solid& s, FaceIndex f) {
+  return s.faces[f].rings.size() == 1 && s.faces[f].rings[0].vertices.size() == 3;
+}
+
 }  // namespace
 
 bool face_meets_plane(const Solid& s, FaceIndex f, const Plane& plane, double tol) {
@@ -80,6 +86,29 @@ void face_crossings(const Solid& sa, FaceIndex fa, const Solid& sb, FaceIndex fb
   const Plane& pb = sb.planes[fb];
   Vector3 dir = cross(pa.normal, pb.normal);
   const double d2 = dot(dir, dir);
+  if (std::sqrt(d2) < Tolerance::kExactCrossingAngle && is_triangle(sa, fa) && is_triangle(sb, fb)) {
+    // Planes at a grazing angle: where they cross, exactly — unless each lies within the tolerance of the
+    // other (coplanar but for rounding: a flat region's triangles, which have no line).
+    const auto& ra = sa.faces[fa].rings[0].vertices;
+    const auto& rb = sb.faces[fb].rings[0].vertices;
+    auto within = [&](const Solid& s, const auto& ring, const Plane& plane) {
+      return std::all_of(ring.begin(), ring.end(), [&](VertexIndex v) {
+        return std::abs(plane.signed_distance(s.vertices[v])) <= tol;
+      });
+    };
+    if (within(sa, ra, pb) && within(sb, rb, pa)) return;
+    const Triangle3 ta{sa.vertices[ra[0]], sa.vertices[ra[1]], sa.vertices[ra[2]]};
+    const Triangle3 tb{sb.vertices[rb[0]], sb.vertices[rb[1]], sb.vertices[rb[2]]};
+    // Most such pairs lie wholly to one side of each other, which the filtered predicates tell cheaply.
+    auto apart = [](const Triangle3& t, const Triangle3& u) {
+      const int s0 = orient3d(t[0], t[1], t[2], u[0]);
+      return s0 != 0 && s0 == orient3d(t[0], t[1], t[2], u[1]) && s0 == orient3d(t[0], t[1], t[2], u[2]);
+    };
+    if (apart(ta, tb) || apart(tb, ta)) return;
+    const auto x = exact_triangle_crossing(ta, tb);
+    if (x && distance((*x)[0], (*x)[1]) > tol) out.push_back({(*x)[0], (*x)[1]});
+    return;
+  }
   if (std::sqrt(d2) < Tolerance::kCoplanarAngle) return;  // parallel or coplanar: no line
   // A point on both planes (n·x = −offset): x0 = (h1 (n2 × d) + h2 (d × n1)) / |d|².
   const Point3 origin =

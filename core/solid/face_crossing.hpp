@@ -23,7 +23,9 @@ struct FaceCrossingScratch {
 };
 
 // Appends to `out` the pieces where face `fa` of `sa` and face `fb` of `sb` cross, each more than
-// `tolerance` long. Parallel and coplanar faces (normals within Tolerance::kCoplanarAngle) have none.
+// `tolerance` long. Two triangles at a grazing angle (Tolerance::kExactCrossingAngle) are met exactly,
+// and have none only when exactly coplanar or parallel; other faces with normals within
+// Tolerance::kCoplanarAngle have none.
 void face_crossings(const Solid& sa, FaceIndex fa, const Solid& sb, FaceIndex fb, double tolerance,
                     FaceCrossingScratch& scratch, std::vector<CrossingPiece>& out);
 

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "core/geometry/box3.hpp"
+#include "core/geometry/exact_crossing.hpp"
 #include "core/geometry/exact_predicates.hpp"
 #include "core/parallel.hpp"
 #include "core/solid/face_crossing.hpp"
@@ -368,15 +369,24 @@ class Finder {
       return (dp > tol_ && dq > tol_) || (dp < -tol_ && dq < -tol_);
     };
     if (one_side(b.plane, a.p1, a.p2) || one_side(a.plane, b.p1, b.p2)) return;
-    // Coplanar neighbours (a flat region's fan: most pairs of a CAD mesh) have no line to cross along, as
-    // face_crossings rules for every pair.
-    const Vector3 line = cross(a.plane.normal, b.plane.normal);
-    if (dot(line, line) < Tolerance::kCoplanarAngle * Tolerance::kCoplanarAngle) return;
     const Point3 a1 = a.p1, a2 = a.p2, b1 = b.p1, b2 = b.p2;
+    // Nearly coplanar neighbours within the tolerance of each other's planes (a flat region's fan: most
+    // pairs of a CAD mesh) have no line to cross along, as face_crossings rules for every pair — and this
+    // spares the predicates below their exact path, which exactly coplanar points always take.
+    const Vector3 line = cross(a.plane.normal, b.plane.normal);
+    const bool grazing = dot(line, line) < Tolerance::kExactCrossingAngle * Tolerance::kExactCrossingAngle;
+    auto near = [&](const Plane& plane, Point3 p) { return std::abs(plane.signed_distance(p)) <= tol_; };
+    if (grazing && near(b.plane, a1) && near(b.plane, a2) && near(a.plane, b1) && near(a.plane, b2)) return;
     const int g1 = orient3d(V, b1, b2, a1), g2 = orient3d(V, b1, b2, a2);
     if (g1 * g2 >= 0) return;
     const int h1 = orient3d(V, a1, a2, b1), h2 = orient3d(V, a1, a2, b2);
     if (h1 * h2 >= 0 || g1 != -h1) return;
+    if (grazing) {  // where the planes' line runs is too ill-conditioned for doubles: exactly
+      const auto x = exact_triangle_crossing({V, a1, a2}, {V, b1, b2});
+      if (x && distance((*x)[0], (*x)[1]) > tol_)
+        part.found.push_back({(*x)[0], (*x)[1], std::min(a.face, b.face), std::max(a.face, b.face)});
+      return;
+    }
     // Where L leaves each triangle, from the same determinants' values (their signs are known).
     const double vg1 = orient3d_value(V, b1, b2, a1), vg2 = orient3d_value(V, b1, b2, a2);
     const double vh1 = orient3d_value(V, a1, a2, b1), vh2 = orient3d_value(V, a1, a2, b2);

@@ -15,11 +15,9 @@
 #include <string>
 #include <vector>
 
-#include "core/camera/lookat_camera.hpp"
-#include "core/camera/ortho_camera.hpp"
 #include "core/hlr/render_frame.hpp"
-#include "core/solid/solid_builder.hpp"
 #include "stdlib/generators.hpp"
+#include "tests/support/mesh_views.hpp"
 #include "tests/support/ray_caster_checks.hpp"
 #include "tests/support/seeded_rng.hpp"
 
@@ -27,44 +25,6 @@ namespace hlr::test {
 namespace {
 
 namespace gen = hlr::stdlib;
-
-// The solid with the given vertices and faces (one ring each), built as an imported mesh would be.
-Solid rebuilt(const std::vector<Point3>& vertices, const std::vector<std::vector<VertexIndex>>& faces) {
-  SolidBuilder builder;
-  std::vector<VertexIndex> index;
-  for (Point3 p : vertices) index.push_back(builder.add_vertex(p));
-  for (const auto& face : faces) {
-    std::vector<VertexIndex> loop;
-    for (VertexIndex v : face) loop.push_back(index[v]);
-    builder.add_indexed_face_loop(loop);
-  }
-  SolidBuildResult built = builder.build();
-  if (!built.ok()) {
-    std::string why;
-    for (const auto& d : built.diagnostics) why += d.message + "\n";
-    ADD_FAILURE() << "the mesh does not build:\n" << why;
-    return gen::box({0, 0, 0}, {1, 1, 1});
-  }
-  return std::move(*built.solid);
-}
-
-// Its faces as triangles (fans), so that moving a vertex keeps every face planar.
-std::vector<std::vector<VertexIndex>> triangles_of(const Solid& s) {
-  std::vector<std::vector<VertexIndex>> faces;
-  for (const Face& f : s.faces) {
-    const auto& ring = f.rings[0].vertices;
-    for (std::size_t i = 1; i + 1 < ring.size(); ++i) faces.push_back({ring[0], ring[i], ring[i + 1]});
-  }
-  return faces;
-}
-
-// Views from every side at 3–5 times `size` from `center`: lookat with fov 30–60°, or ortho.
-Camera random_view(Rng& r, Point3 center, double size, int n) {
-  const Point3 eye = center + r(3, 5) * size * r.direction();
-  const Vector3 up = std::abs(normalize(center - eye).z) > 0.99 ? Vector3{0, 1, 0} : Vector3{0, 0, 1};
-  if (n % 3 == 2) return ortho_camera(OrthoParameters{eye, center, up, 2.5 * size, 0});
-  return lookat_camera(LookatParameters{eye, center, up, r(30, 60), 0, 0});
-}
 
 struct Tally {
   int views = 0, failed = 0, with_crossings = 0;
@@ -97,7 +57,8 @@ TEST(SelfIntersectingMesh, SphereWithAVertexPushedThrough) {
     const Vector3 out = normalize(vertices[v] - Point3{0, 0, 0});
     vertices[v] = vertices[v] - r(2.3, 2.8) * out;
     Scene scene;
-    scene.objects.push_back({"spiked", std::make_shared<const Solid>(rebuilt(vertices, triangles_of(sphere)))});
+    scene.objects.push_back(
+        {"spiked", std::make_shared<const Solid>(mesh_solid(vertices, triangles_of(sphere)))});
     ASSERT_TRUE(scene.objects[0].solid->closed);
     ASSERT_FALSE(scene.objects[0].solid->self_crossings().empty()) << "the spike should cross the far side";
     const Tally t = check_views(scene, {0, 0, 0}, 1.8, seed, 100);
@@ -124,7 +85,7 @@ TEST(SelfIntersectingMesh, RibbonAlongAFigureOfEight) {
     faces.push_back({a, b + 1, a + 1});
   }
   Scene scene;
-  scene.objects.push_back({"ribbon", std::make_shared<const Solid>(rebuilt(vertices, faces))});
+  scene.objects.push_back({"ribbon", std::make_shared<const Solid>(mesh_solid(vertices, faces))});
   ASSERT_FALSE(scene.objects[0].solid->closed);
   double crossing = 0;
   for (const SelfCrossing& x : scene.objects[0].solid->self_crossings()) crossing += distance(x.p0, x.p1);
@@ -156,7 +117,7 @@ TEST(SelfIntersectingMesh, TwoShellsWeldedAtAVertex) {
   std::vector<std::vector<VertexIndex>> faces = octahedron(0, 1, 5);
   for (const auto& f : octahedron(0, 6, 10)) faces.push_back(f);
   Scene scene;
-  scene.objects.push_back({"welded", std::make_shared<const Solid>(rebuilt(vertices, faces))});
+  scene.objects.push_back({"welded", std::make_shared<const Solid>(mesh_solid(vertices, faces))});
   ASSERT_FALSE(scene.objects[0].solid->self_crossings().empty());
   const Tally t = check_views(scene, {0, 0, 0.2}, 1.6, 11, 100);
   EXPECT_EQ(t.failed, 0);

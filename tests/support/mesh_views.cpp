@@ -1,0 +1,50 @@
+#include "tests/support/mesh_views.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include "core/camera/lookat_camera.hpp"
+#include "core/camera/ortho_camera.hpp"
+#include "core/solid/solid_builder.hpp"
+#include "stdlib/generators.hpp"
+
+namespace hlr::test {
+
+Solid mesh_solid(const std::vector<Point3>& vertices, const std::vector<std::vector<VertexIndex>>& faces) {
+  SolidBuilder builder;
+  std::vector<VertexIndex> index;
+  for (Point3 p : vertices) index.push_back(builder.add_vertex(p));
+  for (const auto& face : faces) {
+    std::vector<VertexIndex> loop;
+    for (VertexIndex v : face) loop.push_back(index[v]);
+    builder.add_indexed_face_loop(loop);
+  }
+  SolidBuildResult built = builder.build();
+  if (!built.ok()) {
+    std::string why;
+    for (const auto& d : built.diagnostics) why += d.message + "\n";
+    ADD_FAILURE() << "the mesh does not build:\n" << why;
+    return stdlib::box({0, 0, 0}, {1, 1, 1});
+  }
+  return std::move(*built.solid);
+}
+
+std::vector<std::vector<VertexIndex>> triangles_of(const Solid& s) {
+  std::vector<std::vector<VertexIndex>> faces;
+  for (const Face& f : s.faces) {
+    const auto& ring = f.rings[0].vertices;
+    for (std::size_t i = 1; i + 1 < ring.size(); ++i) faces.push_back({ring[0], ring[i], ring[i + 1]});
+  }
+  return faces;
+}
+
+Camera random_view(Rng& r, Point3 center, double size, int n) {
+  const Point3 eye = center + r(3, 5) * size * r.direction();
+  const Vector3 up = std::abs(normalize(center - eye).z) > 0.99 ? Vector3{0, 1, 0} : Vector3{0, 0, 1};
+  if (n % 3 == 2) return ortho_camera(OrthoParameters{eye, center, up, 2.5 * size, 0});
+  return lookat_camera(LookatParameters{eye, center, up, r(30, 60), 0, 0});
+}
+
+}  // namespace hlr::test
