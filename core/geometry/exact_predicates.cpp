@@ -16,12 +16,16 @@ constexpr double kOrient2dBound = 4 * kEpsilon;
 // Below this permanent the products may have underflowed, where the relative bound no longer holds.
 constexpr double kUnderflow = 0x1p-900;
 
-int orient3d_exact(Point3 a, Point3 b, Point3 c, Point3 d) {
+mpq_class orient3d_rational(Point3 a, Point3 b, Point3 c, Point3 d) {
   const mpq_class ax(a.x), ay(a.y), az(a.z);
   const mpq_class bx = mpq_class(b.x) - ax, by = mpq_class(b.y) - ay, bz = mpq_class(b.z) - az;
   const mpq_class cx = mpq_class(c.x) - ax, cy = mpq_class(c.y) - ay, cz = mpq_class(c.z) - az;
   const mpq_class dx = mpq_class(d.x) - ax, dy = mpq_class(d.y) - ay, dz = mpq_class(d.z) - az;
-  const mpq_class det = dx * (by * cz - bz * cy) + dy * (bz * cx - bx * cz) + dz * (bx * cy - by * cx);
+  return dx * (by * cz - bz * cy) + dy * (bz * cx - bx * cz) + dz * (bx * cy - by * cx);
+}
+
+int orient3d_exact(Point3 a, Point3 b, Point3 c, Point3 d) {
+  const mpq_class det = orient3d_rational(a, b, c, d);
   return sgn(det);
 }
 
@@ -60,6 +64,14 @@ int orient3d(Point3 a, Point3 b, Point3 c, Point3 d) {
     if (det < -bound) return -1;
   }
   return orient3d_exact(a, b, c, d);
+}
+
+double plane_crossing(Point3 a, Point3 b, Point3 c, Point3 p, Point3 q) {
+  // The determinant is affine in its last point: along p + t·(q − p) it is (1 − t)·D(p) + t·D(q).
+  const mpq_class dp = orient3d_rational(a, b, c, p), dq = orient3d_rational(a, b, c, q);
+  if (sgn(dp) * sgn(dq) >= 0) return sgn(dp) == 0 ? 0.0 : 1.0;
+  const mpq_class t = dp / (dp - dq);
+  return t.get_d();
 }
 
 int orient2d(Point2 a, Point2 b, Point2 c) {

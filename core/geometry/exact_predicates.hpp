@@ -20,4 +20,8 @@ int orient2d(Point2 a, Point2 b, Point2 c);
 // already decided: the value is within Shewchuk's bound of the exact one).
 double orient3d_value(Point3 a, Point3 b, Point3 c, Point3 d);
 
+// Where segment p→q crosses the plane of a, b, c: the parameter t of p + t·(q − p), computed exactly and
+// rounded, when p and q lie strictly on opposite sides (else 0 if p is on the plane, 1 otherwise).
+double plane_crossing(Point3 a, Point3 b, Point3 c, Point3 p, Point3 q);
+
 }  // namespace hlr

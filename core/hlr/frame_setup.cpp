@@ -278,6 +278,12 @@ void append(FrameSetup& setup, FrameSetup&& part) {
 
 FrameSetup prepare_frame(const Scene& scene, const Camera& camera, bool keep_culled, unsigned threads) {
   FrameSetup setup;
+  setup.scene = &scene;
+  const auto& m = camera.viewFromWorld.m;
+  const double det = m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) -
+                     m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
+                     m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
+  setup.handedness = det < 0 ? -1 : 1;
   setup.length_tolerance = frame_tolerance(scene, camera).length;
   const double ltol = setup.length_tolerance;
   const ViewSide view{is_perspective(camera), is_perspective(camera) ? camera.eye_world() : Point3{},

@@ -68,6 +68,11 @@ struct FrameSetup {
   // shows only its front faces).
   std::vector<std::vector<std::int8_t>> facing;
   std::vector<char> cull;
+  // What the exact fallbacks read: the scene's world coordinates (it outlives the frame), and whether the
+  // camera's view map keeps handedness (+1) or mirrors it (−1, Albers' eye system), which turns a world
+  // orientation into the view-space side of a face.
+  const Scene* scene = nullptr;
+  int handedness = 1;
 };
 
 // Sets c.picture_tolerance from its current picture and view end points.

@@ -5,6 +5,9 @@
 //   - an open sheet with a sliver flap on its border, folded on by 170° to 179.999° and folded back over
 //     the sheet to within 10° down to 0.001°;
 //   - two triangles crossing at 1° down to 10⁻⁶°;
+//   - twin triangles overlapping 10⁻³ down to 10⁻¹² of their size apart (the back one's edges are hidden
+//     where the front one covers them, however close);
+//   - an edge passing a corner 10⁻³ down to 10⁻¹² beside it, on it and across it, seen from above;
 //   - all of them, and a triangulated sphere, with every coordinate moved by one ulp at random.
 // Each from random views; no sample of the drawing may differ from the oracle.
 //   hlr_core_tests --gtest_filter='NearDegenerateMesh*'
@@ -16,6 +19,7 @@
 #include <string>
 #include <vector>
 
+#include "core/camera/lookat_camera.hpp"
 #include "core/hlr/render_frame.hpp"
 #include "stdlib/generators.hpp"
 #include "tests/support/exact_oracle.hpp"
@@ -85,6 +89,29 @@ Mesh grazing_pair(double angle) {
   for (Point3 p : {Point3{-0.9, -0.5, 0}, Point3{0.8, -0.6, 0}, Point3{-0.2, 0.9, 0}})
     m.vertices.push_back(pivot + rotated(p - pivot, axis, angle) + Vector3{0, 0, 0});
   m.faces = {{0, 1, 2}, {3, 4, 5}};
+  return m;
+}
+
+// Twin triangles, the second a copy of the first moved `gap` (× its size) along the normal and shifted
+// sideways so that each covers part of the other.
+Mesh twins(double gap) {
+  Mesh m;
+  m.vertices = {{0, 0, 0}, {1, 0.1, 0}, {0.3, 0.9, 0}};
+  for (int k = 0; k < 3; ++k) m.vertices.push_back(m.vertices[k] + Vector3{0.25, 0.15, gap});
+  m.faces = {{0, 1, 2}, {3, 4, 5}};
+  return m;
+}
+
+// A triangle and, across it in front, a thin triangle whose edge passes `miss` (× size) beside the first
+// triangle's corner, in the picture of a view straight down — and from other views near it.
+Mesh grazing_corner(double miss) {
+  Mesh m;
+  m.vertices = {{0, 0, 0}, {1, 0, 0}, {0.5, 0.8, 0}};
+  // The front triangle's edge runs along x = 1 + miss, above the corner (1, 0, 0).
+  m.vertices.push_back({1 + miss, -0.5, 0.3});
+  m.vertices.push_back({1 + miss, 0.5, 0.3});
+  m.vertices.push_back({1.6, 0, 0.3});
+  m.faces = {{0, 1, 2}, {3, 5, 4}};
   return m;
 }
 
@@ -164,11 +191,43 @@ TEST(NearDegenerateMesh, TrianglesCrossingAtGrazingAngles) {
   }
 }
 
+TEST(NearDegenerateMesh, NearCoplanarTwins) {
+  const double gaps[] = {1e-3, 1e-6, 1e-9, 1e-12};
+  unsigned seed = 400;
+  for (double gap : gaps) {
+    const Tally t =
+        check_views(twins(gap), {0.6, 0.5, 0}, 1, seed++, 25, "twins " + std::to_string(gap) + " apart");
+    EXPECT_EQ(t.failed, 0);
+  }
+}
+
+TEST(NearDegenerateMesh, EdgesGrazingACorner) {
+  const double misses[] = {1e-3, 1e-6, 1e-9, 1e-12, 0, -1e-12, -1e-9};
+  unsigned seed = 500;
+  for (double miss : misses) {
+    // Views from near straight above, where the front edge passes the corner closest in the picture.
+    Scene scene;
+    const Mesh m = grazing_corner(miss);
+    scene.objects.push_back({"corner", std::make_shared<const Solid>(mesh_solid(m.vertices, m.faces))});
+    Rng r(seed++);
+    for (int n = 0; n < 12; ++n) {
+      // Straight above the corner (the front edge's picture passes it at `miss`), then tilted a little.
+      const Point3 target{1, 0, 0};
+      const Vector3 off = n == 0 ? Vector3{0, 0, 1} : Vector3{r(-0.02, 0.02), r(-0.02, 0.02), 1};
+      const Camera camera = lookat_camera(LookatParameters{target + 3 * off, target, {0, 1, 0}, 40, 0, 0});
+      const FrameResult result = render_frame(scene, camera);
+      const ExactReport report = check_exact(scene, camera, result);
+      EXPECT_TRUE(report.ok()) << "miss " << miss << ", view " << n << ":\n" << report.summary();
+    }
+  }
+}
+
 TEST(NearDegenerateMesh, OneUlpFromEverything) {
   Rng r(300);
   std::vector<std::pair<std::string, Mesh>> meshes = {{"pancake", pancake(0.01 * kDegree)},
                                                       {"flap", sheet_with_flap(0.01 * kDegree)},
-                                                      {"grazing", grazing_pair(1e-4 * kDegree)}};
+                                                      {"grazing", grazing_pair(1e-4 * kDegree)},
+                                                      {"twins", twins(1e-12)}};
   const Solid sphere = stdlib::sphere({0, 0, 0}, 1, 10, 6, 0);
   meshes.push_back({"sphere", {sphere.vertices, triangles_of(sphere)}});
   unsigned seed = 300;
