@@ -20,6 +20,11 @@ int orient2d(Point2 a, Point2 b, Point2 c);
 // already decided: the value is within Shewchuk's bound of the exact one).
 double orient3d_value(Point3 a, Point3 b, Point3 c, Point3 d);
 
+// orient3d(a, b, c, p) for the point p = p0 + t·(p1 − p0) of a segment, exactly: p is not rounded.
+int orient3d_along(Point3 a, Point3 b, Point3 c, Point3 p0, Point3 p1, double t);
+// The same with the plane through a and b along direction dir: sign of ((b − a) × dir) · (p − a).
+int orient3d_along_direction(Point3 a, Point3 b, Vector3 dir, Point3 p0, Point3 p1, double t);
+
 // Where segment p→q crosses the plane of a, b, c: the parameter t of p + t·(q − p), computed exactly and
 // rounded, when p and q lie strictly on opposite sides (else 0 if p is on the plane, 1 otherwise).
 double plane_crossing(Point3 a, Point3 b, Point3 c, Point3 p, Point3 q);

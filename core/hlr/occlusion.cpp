@@ -5,8 +5,8 @@
 #include <span>
 
 #include "core/geometry/clip2d.hpp"
-#include "core/geometry/exact_predicates.hpp"
 #include "core/geometry/polygon2d.hpp"
+#include "core/hlr/exact_occlusion.hpp"
 #include "core/tolerance.hpp"
 
 namespace hlr {
@@ -41,58 +41,27 @@ bool leaves_triangle_corner(const Point2* t, Point2 a, Point2 b) {
   return false;
 }
 
-// The exact fallback of the plane test, for an edge whose ends lie within the tolerance of a triangle's
-// plane (near-coplanar twins, a sheet folded onto itself): the triangle's plane is exact, and so are the
-// edge's end points when the candidate is a whole edge, so the side of each end is the sign of a world
-// orientation — and where the edge crosses the plane, an exact root. Faces of more corners are planar
-// only to Tolerance::kPlanarity and keep the tolerance rule (within it is on the plane).
-struct ExactPlaneTest {
-  Point3 corner[3];
-  Point3 p0, p1;  // world points of the candidate's view0, view1
-  int sign = 1;   // turns a world orientation into the side g measures
-
-  bool prepare(const FrameSetup& setup, const Camera& camera, const Candidate& c, const Occluder& o) {
-    if (!setup.scene || c.source != SegmentSource::Edge) return false;
-    const Solid& occluder = *setup.scene->objects[o.object].solid;
-    const Face& face = occluder.faces[o.face];
-    if (face.rings.size() != 1 || face.rings[0].vertices.size() != 3) return false;
-    for (int k = 0; k < 3; ++k) corner[k] = occluder.vertices[face.rings[0].vertices[k]];
-    // A candidate clipped by the near plane no longer ends at its vertices: mapping them again gives the
-    // very doubles of its view points only when it was not.
-    const Solid& own = *setup.scene->objects[c.object].solid;
-    const SolidEdge& e = own.edges[c.edge];
-    const Point3 a = own.vertices[e.v0], b = own.vertices[e.v1];
-    const Point3 va = camera.view(a), vb = camera.view(b);
-    if (va == c.view0 && vb == c.view1) {
-      p0 = a, p1 = b;
-    } else if (vb == c.view0 && va == c.view1) {
-      p0 = b, p1 = a;
-    } else {
-      return false;
-    }
-    // g's plane is the outward one seen in view space, where a mirroring view map turns orientations.
-    sign = (o.eye_side > 0 ? 1 : -1) * setup.handedness;
-    return true;
-  }
-  int side(Point3 p) const {
-    if (p == corner[0] || p == corner[1] || p == corner[2]) return 0;  // a shared vertex (commonest)
-    return sign * orient3d(corner[0], corner[1], corner[2], p);
-  }
-  double root() const { return plane_crossing(corner[0], corner[1], corner[2], p0, p1); }
-};
-
 // Sides of the candidate's ends that lie within the tolerance of the occluder's plane (side 0), decided
-// exactly where ExactPlaneTest can; `root` set when both were within it (g is then rounding, and so would
-// its root be). Rare, and kept out of the hot path.
+// exactly where ExactTriangleTest can; `root` set when both were within it (g is then rounding, and so
+// would its root be). Rare, and kept out of the hot path.
 [[gnu::noinline]] void decide_within_tolerance(const FrameSetup& setup, const Camera& camera,
                                                const Candidate& c, const Occluder& o, int& side0, int& side1,
                                                double& root) {
-  ExactPlaneTest exact;
+  ExactTriangleTest exact;
   if (!exact.prepare(setup, camera, c, o)) return;
   const bool both = side0 == 0 && side1 == 0;
-  if (side0 == 0) side0 = exact.side(exact.p0);
-  if (side1 == 0) side1 = exact.side(exact.p1);
+  if (side0 == 0) side0 = exact.side(0);
+  if (side1 == 0) side1 = exact.side(1);
   if (both && side0 * side1 < 0) root = exact.root();
+}
+
+// A piece whose midpoint lies within the tolerance of the occluder's outline in the picture: inside or
+// not, exactly, where ExactTriangleTest can (else on the outline, which hides nothing).
+[[gnu::noinline]] bool exactly_inside(const FrameSetup& setup, const Camera& camera, const Candidate& c,
+                                      const Occluder& o, double s_mid) {
+  ExactTriangleTest exact;
+  return exact.prepare(setup, camera, c, o) &&
+         exact.shadow(view_param(c, camera, s_mid)) == PointClass::Inside;
 }
 
 }  // namespace
@@ -223,8 +192,10 @@ void add_hidden_intervals(const FrameSetup& setup, const Camera& camera, const C
     const double s0 = breaks[i], s1 = breaks[i + 1];
     if (s1 <= s0) continue;
     const Point2 mid = lerp(a, b, 0.5 * (s0 + s1));
-    const bool inside = (grid ? grid->classify(mid, ptol, is_seam)
-                              : classify_point(pts, ring_ends, mid, ptol, is_seam)) == PointClass::Inside;
+    const PointClass where =
+        grid ? grid->classify(mid, ptol, is_seam) : classify_point(pts, ring_ends, mid, ptol, is_seam);
+    const bool inside = where == PointClass::Inside || (where == PointClass::Boundary &&
+                                                        exactly_inside(setup, camera, c, o, 0.5 * (s0 + s1)));
     if (inside) {
       if (open_lo < 0) open_lo = s0;
       open_hi = s1;

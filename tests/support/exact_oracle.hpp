@@ -80,7 +80,8 @@ class ExactOracle {
 
 // The drawing against the exact oracle, in samples along the drawn pieces and the edges that are drawn
 // candidates (Feature, Boundary, Marking, Free; Smooth where exactly one face faces the eye), and along
-// the exact crossings of triangles.
+// the exact crossings of triangles. A visible sample of an edge is covered by a drawn piece of that edge,
+// or — two edges on one line of the picture are drawn once — by any drawn piece through its picture point.
 struct ExactReport {
   std::size_t drawn_samples = 0, drawn_hidden = 0;  // samples of drawn pieces the oracle hides
   std::size_t edge_samples = 0, edge_visible = 0, edge_missing = 0;
