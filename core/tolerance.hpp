@@ -28,6 +28,9 @@ struct Tolerance {
   // here would pass 1e-12 of their size. Faces of more corners are planar only to kPlanarity, and below
   // kCoplanarAngle they keep to that rule: no line.
   static constexpr double kExactCrossingAngle = 1e-4;
+  // Two lines of the picture at a smaller angle (sine) cross where floating point puts them only to within
+  // ~u / angle of their length; the occlusion test then adds a triangle's exact crossing as well.
+  static constexpr double kNearlyParallel = 1e-6;
   // A positive floor for a scale or a divisor: keeps it nonzero, and is below every real length.
   static constexpr double kFloor = 1e-300;
 

@@ -66,12 +66,31 @@ int orient3d(Point3 a, Point3 b, Point3 c, Point3 d) {
   return orient3d_exact(a, b, c, d);
 }
 
-double plane_crossing(Point3 a, Point3 b, Point3 c, Point3 p, Point3 q) {
-  // The determinant is affine in its last point: along p + t·(q − p) it is (1 − t)·D(p) + t·D(q).
-  const mpq_class dp = orient3d_rational(a, b, c, p), dq = orient3d_rational(a, b, c, q);
+namespace {
+
+// Where the determinant, affine in its last point, changes sign along p + t·(q − p): dp / (dp − dq).
+double crossing_of(const mpq_class& dp, const mpq_class& dq) {
   if (sgn(dp) * sgn(dq) >= 0) return sgn(dp) == 0 ? 0.0 : 1.0;
   const mpq_class t = dp / (dp - dq);
   return t.get_d();
+}
+
+mpq_class along_direction_rational(Point3 a, Point3 b, Vector3 dir, Point3 p) {
+  const mpq_class ax(a.x), ay(a.y), az(a.z);
+  const mpq_class bx = mpq_class(b.x) - ax, by = mpq_class(b.y) - ay, bz = mpq_class(b.z) - az;
+  const mpq_class cx(dir.x), cy(dir.y), cz(dir.z);
+  const mpq_class dx = mpq_class(p.x) - ax, dy = mpq_class(p.y) - ay, dz = mpq_class(p.z) - az;
+  return dx * (by * cz - bz * cy) + dy * (bz * cx - bx * cz) + dz * (bx * cy - by * cx);
+}
+
+}  // namespace
+
+double plane_crossing(Point3 a, Point3 b, Point3 c, Point3 p, Point3 q) {
+  return crossing_of(orient3d_rational(a, b, c, p), orient3d_rational(a, b, c, q));
+}
+
+double plane_crossing_along_direction(Point3 a, Point3 b, Vector3 dir, Point3 p, Point3 q) {
+  return crossing_of(along_direction_rational(a, b, dir, p), along_direction_rational(a, b, dir, q));
 }
 
 namespace {

@@ -28,5 +28,7 @@ int orient3d_along_direction(Point3 a, Point3 b, Vector3 dir, Point3 p0, Point3 
 // Where segment p→q crosses the plane of a, b, c: the parameter t of p + t·(q − p), computed exactly and
 // rounded, when p and q lie strictly on opposite sides (else 0 if p is on the plane, 1 otherwise).
 double plane_crossing(Point3 a, Point3 b, Point3 c, Point3 p, Point3 q);
+// The same for the plane through a and b along direction dir.
+double plane_crossing_along_direction(Point3 a, Point3 b, Vector3 dir, Point3 p, Point3 q);
 
 }  // namespace hlr

@@ -10,7 +10,9 @@
 
 namespace hlr {
 
-enum class PointClass { Outside, Boundary, Inside };
+// Seam: within the tolerance of a seam (an edge the neighbouring face across it covers too), away from its
+// ends — covered, unless an exact test says where the point lies.
+enum class PointClass { Outside, Boundary, Inside, Seam };
 
 // Squared distance from p to the segment a–b.
 inline double distance2_to_segment(Point2 p, Point2 a, Point2 b) {
@@ -53,7 +55,7 @@ PointClass classify_point(std::span<const Point2> points, std::span<const std::u
     }
     begin = end;
   }
-  return (inside || on_seam) ? PointClass::Inside : PointClass::Outside;
+  return on_seam ? PointClass::Seam : (inside ? PointClass::Inside : PointClass::Outside);
 }
 
 }  // namespace hlr
@@ -61,8 +63,8 @@ PointClass classify_point(std::span<const Point2> points, std::span<const std::u
 namespace hlr {
 
 // Without seams: every ring edge is outline.
-inline PointClass classify_point(std::span<const Point2> points, std::span<const std::uint32_t> ring_ends, Point2 p,
-                                 double tolerance) {
+inline PointClass classify_point(std::span<const Point2> points, std::span<const std::uint32_t> ring_ends,
+                                 Point2 p, double tolerance) {
   return classify_point(points, ring_ends, p, tolerance, [](std::uint32_t) { return false; });
 }
 

@@ -25,8 +25,13 @@ class ExactTriangleTest {
   // Where the candidate crosses the plane (view parameter), when its ends lie strictly on both sides.
   double root() const;
   // Where the candidate's point at view parameter t lies against the triangle's picture: Inside when the
-  // sight line through it passes strictly inside the triangle, Boundary when exactly through its outline.
-  PointClass shadow(double t) const;
+  // sight line through it passes strictly inside the triangle, Boundary when exactly through its outline
+  // (`side` then says through which side, k from corner k to k + 1, when exactly one; else −1).
+  PointClass shadow(double t, int& side) const;
+  // Where the candidate crosses the sight plane of the triangle's side k (view parameter), or −1 when its
+  // ends do not lie strictly on both sides: in the picture, where it crosses that side's line — which for
+  // lines nearly parallel in the picture floating point places anywhere along them.
+  double sight_crossing(int k) const;
 
  private:
   Point3 corner_[3];

@@ -1,8 +1,11 @@
 #include "core/hlr/frame_setup.hpp"
 
+#include "core/geometry/exact_predicates.hpp"
+
 #include <algorithm>
 #include <cmath>
 
+#include "core/geometry/exact_predicates.hpp"
 #include "core/hlr/intersection_lines.hpp"
 #include "core/parallel.hpp"
 #include "core/tolerance.hpp"
@@ -162,6 +165,18 @@ struct ViewSide {
 };
 
 // Per face of [begin, end): +1 front, −1 back, 0 edge-on, into `facing` (sized for every face).
+bool is_triangle(const Face& face) { return face.rings.size() == 1 && face.rings[0].vertices.size() == 3; }
+
+// A triangle seen within the tolerance of edge-on faces the eye or not exactly (its plane is exact): the
+// side of the eye, or of the view direction, by an orientation of its corners. 0 only when exactly edge-on.
+int exact_facing(const Solid& solid, std::size_t f, const ViewSide& view) {
+  const auto& ring = solid.faces[f].rings[0].vertices;
+  const Point3 a = solid.vertices[ring[0]], b = solid.vertices[ring[1]], c = solid.vertices[ring[2]];
+  // ((b − a) × (c − a)) points out of the face (counter-clockwise seen from outside).
+  if (view.perspective) return orient3d(a, b, c, view.eye);
+  return orient3d_along_direction(a, b, view.direction, c, c, 0);  // ((b − a) × d)·(c − a) = −n·d
+}
+
 void face_facing(const Solid& solid, const ViewSide& view, double length_tolerance,
                  std::vector<std::int8_t>& facing, std::size_t begin, std::size_t end) {
   for (std::size_t f = begin; f < end; ++f) {
@@ -176,7 +191,7 @@ void face_facing(const Solid& solid, const ViewSide& view, double length_toleran
       s = -dot(n, view.direction);
       tol = Tolerance::kRelative;
     }
-    facing[f] = s > tol ? 1 : (s < -tol ? -1 : 0);
+    facing[f] = s > tol ? 1 : (s < -tol ? -1 : (is_triangle(solid.faces[f]) ? exact_facing(solid, f, view) : 0));
   }
 }
 

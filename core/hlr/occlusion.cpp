@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <span>
 
 #include "core/geometry/clip2d.hpp"
@@ -55,13 +56,18 @@ bool leaves_triangle_corner(const Point2* t, Point2 a, Point2 b) {
   if (both && side0 * side1 < 0) root = exact.root();
 }
 
-// A piece whose midpoint lies within the tolerance of the occluder's outline in the picture: inside or
-// not, exactly, where ExactTriangleTest can (else on the outline, which hides nothing).
-[[gnu::noinline]] bool exactly_inside(const FrameSetup& setup, const Camera& camera, const Candidate& c,
-                                      const Occluder& o, double s_mid) {
+// A piece whose midpoint lies within the tolerance of the occluder's outline in the picture, or of a seam:
+// 1 if inside, 0 if not, decided exactly where ExactTriangleTest can (−1 where it cannot). Exactly on a
+// seam is inside: the neighbour across it covers the rest.
+template <typename IsSeam>
+[[gnu::noinline]] int exactly_inside(const FrameSetup& setup, const Camera& camera, const Candidate& c,
+                                     const Occluder& o, double s_mid, IsSeam&& is_seam) {
   ExactTriangleTest exact;
-  return exact.prepare(setup, camera, c, o) &&
-         exact.shadow(view_param(c, camera, s_mid)) == PointClass::Inside;
+  if (!exact.prepare(setup, camera, c, o)) return -1;
+  int side = -1;
+  const PointClass where = exact.shadow(view_param(c, camera, s_mid), side);
+  if (where == PointClass::Inside) return 1;
+  return where == PointClass::Boundary && side >= 0 && is_seam(static_cast<std::uint32_t>(side)) ? 1 : 0;
 }
 
 }  // namespace
@@ -158,7 +164,22 @@ void add_hidden_intervals(const FrameSetup& setup, const Camera& camera, const C
     ends[k] = setup.ring_ends[o.first_ring + k] - o.first_point;
   const double rlen = std::sqrt(r2);
   // Breaks from ring edge p→q.
-  auto test_edge = [&](Point2 p, Point2 q) {
+  // Lines nearly parallel in the picture cross where floating point puts them only to within u / angle
+  // of their length: a triangle's side then gets its exact crossing too (extra breaks are harmless).
+  int exact_state = 0;  // 0 untried, 1 ready, −1 unavailable
+  std::optional<ExactTriangleTest> exact;
+  auto exact_break = [&](std::uint32_t i) {
+    if (exact_state == 0) {
+      exact.emplace();
+      exact_state = exact->prepare(setup, camera, c, o) ? 1 : -1;
+    }
+    if (exact_state < 0) return;
+    const double t = exact->sight_crossing(static_cast<int>(i));
+    if (t < 0) return;
+    const double s = picture_param(c, camera, t);
+    if (s > s_lo && s < s_hi) breaks.push_back(s);
+  };
+  auto test_edge = [&](std::uint32_t i, Point2 p, Point2 q) {
     const Vector2 e = q - p;
     const Vector2 ap = p - a;
     // Ring vertex close to the segment's line: break at its foot.
@@ -167,6 +188,7 @@ void add_hidden_intervals(const FrameSetup& setup, const Camera& camera, const C
     // Proper crossing. A crossing at or near a ring vertex is also caught by the vertex test above, so
     // u needs no margin; parallel edges have no crossing of their own.
     const double den = cross(r, e);
+    if (point_count == 3 && std::abs(den) <= Tolerance::kNearlyParallel * rlen * length(e)) exact_break(i);
     if (den == 0) return;
     const double s = cross(ap, e) / den;
     const double u = cross(ap, r) / den;
@@ -175,12 +197,12 @@ void add_hidden_intervals(const FrameSetup& setup, const Camera& camera, const C
   const RingEdgeGrid* grid = o.grid >= 0 ? &setup.ring_grids[static_cast<std::size_t>(o.grid)] : nullptr;
   if (grid) {  // only the ring edges near the part behind the plane (some twice: extra breaks are harmless)
     grid->for_each_edge_near(lerp(a, b, s_lo), lerp(a, b, s_hi), ptol,
-                             [&](std::uint32_t i) { test_edge(pts[i], pts[grid->next(i)]); });
+                             [&](std::uint32_t i) { test_edge(i, pts[i], pts[grid->next(i)]); });
   } else {
     std::uint32_t begin = 0;
     for (std::uint32_t k = 0; k < o.ring_count; ++k) {
       const std::uint32_t end = ends[k];
-      for (std::uint32_t i = begin; i < end; ++i) test_edge(pts[i], pts[i + 1 < end ? i + 1 : begin]);
+      for (std::uint32_t i = begin; i < end; ++i) test_edge(i, pts[i], pts[i + 1 < end ? i + 1 : begin]);
       begin = end;
     }
   }
@@ -194,8 +216,11 @@ void add_hidden_intervals(const FrameSetup& setup, const Camera& camera, const C
     const Point2 mid = lerp(a, b, 0.5 * (s0 + s1));
     const PointClass where =
         grid ? grid->classify(mid, ptol, is_seam) : classify_point(pts, ring_ends, mid, ptol, is_seam);
-    const bool inside = where == PointClass::Inside || (where == PointClass::Boundary &&
-                                                        exactly_inside(setup, camera, c, o, 0.5 * (s0 + s1)));
+    bool inside = where == PointClass::Inside;
+    if (where == PointClass::Boundary || where == PointClass::Seam) {
+      const int exact = exactly_inside(setup, camera, c, o, 0.5 * (s0 + s1), is_seam);
+      inside = exact < 0 ? where == PointClass::Seam : exact == 1;
+    }
     if (inside) {
       if (open_lo < 0) open_lo = s0;
       open_hi = s1;

@@ -64,7 +64,7 @@ class RingEdgeGrid {
         if (x > p.x) inside = !inside;
       }
     }
-    return (inside || on_seam) ? PointClass::Inside : PointClass::Outside;
+    return on_seam ? PointClass::Seam : (inside ? PointClass::Inside : PointClass::Outside);
   }
 
  private:

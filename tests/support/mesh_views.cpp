@@ -12,8 +12,11 @@
 
 namespace hlr::test {
 
-Solid mesh_solid(const std::vector<Point3>& vertices, const std::vector<std::vector<VertexIndex>>& faces) {
-  SolidBuilder builder;
+Solid mesh_solid(const std::vector<Point3>& vertices, const std::vector<std::vector<VertexIndex>>& faces,
+                 double crease_angle_deg) {
+  SolidBuildOptions options;
+  options.crease_angle_deg = crease_angle_deg;
+  SolidBuilder builder(options);
   std::vector<VertexIndex> index;
   for (Point3 p : vertices) index.push_back(builder.add_vertex(p));
   for (const auto& face : faces) {

@@ -12,7 +12,8 @@ namespace hlr::test {
 
 // The solid with the given vertices and faces (one ring each), built as an imported mesh would be; a
 // mesh that does not build is a test failure (and a unit box is returned).
-Solid mesh_solid(const std::vector<Point3>& vertices, const std::vector<std::vector<VertexIndex>>& faces);
+Solid mesh_solid(const std::vector<Point3>& vertices, const std::vector<std::vector<VertexIndex>>& faces,
+                 double crease_angle_deg = 0);
 
 // A solid's faces as triangles (fans), so that moving a vertex keeps every face planar.
 std::vector<std::vector<VertexIndex>> triangles_of(const Solid& s);

@@ -249,6 +249,38 @@ TEST(NearDegenerateMesh, EdgesGrazingACorner) {
   }
 }
 
+// A smooth sphere (every edge drawn only on the contour) seen with the eye in the plane of one of its
+// triangles, or 1e-10 or 1e-13 of the distance off it on either side: whether that triangle faces the eye
+// decides which of its edges are on the contour — exactly, or the outline has a gap one face long.
+TEST(NearDegenerateMesh, ContourThroughATriangleSeenEdgeOn) {
+  const Solid ball = stdlib::sphere({0, 0, 0}, 1, 16, 9, 0);
+  const Solid smooth = mesh_solid(ball.vertices, triangles_of(ball), 60);
+  Scene scene;
+  scene.objects.push_back({"ball", std::make_shared<const Solid>(smooth)});
+  Rng r(600);
+  int views = 0, contour = 0;
+  for (int n = 0; n < 60; ++n) {
+    const FaceIndex f = static_cast<FaceIndex>(r.integer(0, static_cast<int>(smooth.faces.size()) - 1));
+    const auto& ring = smooth.faces[f].rings[0].vertices;
+    const Point3 a = smooth.vertices[ring[0]], b = smooth.vertices[ring[1]], c = smooth.vertices[ring[2]];
+    const Vector3 normal = normalize(cross(b - a, c - a));
+    const Point3 centroid = a + (1.0 / 3) * ((b - a) + (c - a));
+    const Vector3 along = normalize(cross(normal, r.direction()));  // in the triangle's plane
+    const double offsets[] = {0, 1e-10, -1e-10, 1e-13, -1e-13};
+    const double distance_away = r(3, 5);
+    const Point3 eye = centroid + distance_away * along + offsets[n % 5] * distance_away * normal;
+    const Camera camera = lookat_camera(LookatParameters{eye, {0, 0, 0}, normal, 40, 0, 0});
+    const FrameResult result = render_frame(scene, camera);
+    const ExactReport report = check_exact(scene, camera, result);
+    EXPECT_TRUE(report.ok()) << "view " << n << " (face " << f << ", offset " << offsets[n % 5] << "):\n"
+                             << report.summary();
+    ++views;
+    contour += report.edge_visible > 0;
+  }
+  EXPECT_EQ(views, 60);
+  EXPECT_EQ(contour, 60) << "every view should see the contour";
+}
+
 TEST(NearDegenerateMesh, OneUlpFromEverything) {
   Rng r(300);
   std::vector<std::pair<std::string, Mesh>> meshes = {{"pancake", pancake(0.01 * kDegree)},
