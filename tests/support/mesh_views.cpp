@@ -9,6 +9,7 @@
 #include "core/camera/ortho_camera.hpp"
 #include "core/solid/solid_builder.hpp"
 #include "stdlib/generators.hpp"
+#include "stdlib/mesh_detail.hpp"
 
 namespace hlr::test {
 
@@ -36,9 +37,17 @@ Solid mesh_solid(const std::vector<Point3>& vertices, const std::vector<std::vec
 
 std::vector<std::vector<VertexIndex>> triangles_of(const Solid& s) {
   std::vector<std::vector<VertexIndex>> faces;
-  for (const Face& f : s.faces) {
-    const auto& ring = f.rings[0].vertices;
-    for (std::size_t i = 1; i + 1 < ring.size(); ++i) faces.push_back({ring[0], ring[i], ring[i + 1]});
+  std::vector<stdlib::mesh_detail::Triangle> triangles;
+  std::int64_t budget = 1 << 30;
+  for (std::size_t f = 0; f < s.faces.size(); ++f) {
+    if (s.faces[f].rings.size() != 1) ADD_FAILURE() << "triangles_of: face " << f << " has holes";
+    const auto& ring = s.faces[f].rings[0].vertices;
+    // Ear clipping, as the importer does: a fan of a concave face would overlap itself.
+    triangles.clear();
+    const std::vector<std::uint32_t> loop(ring.begin(), ring.end());
+    if (!stdlib::mesh_detail::triangulate(s.vertices, loop, s.planes[f].normal, triangles, budget))
+      ADD_FAILURE() << "triangles_of: face " << f << " does not triangulate";
+    for (const auto& t : triangles) faces.push_back({t[0], t[1], t[2]});
   }
   return faces;
 }

@@ -15,7 +15,8 @@ namespace hlr::test {
 Solid mesh_solid(const std::vector<Point3>& vertices, const std::vector<std::vector<VertexIndex>>& faces,
                  double crease_angle_deg = 0);
 
-// A solid's faces as triangles (fans), so that moving a vertex keeps every face planar.
+// A solid's faces (without holes) as triangles, ear-clipped as the importer does, so that moving a vertex
+// keeps every face planar.
 std::vector<std::vector<VertexIndex>> triangles_of(const Solid& s);
 
 // A view from a random side at 3–5 times `size` from `center`: lookat with fov 30–60°, or (every third
