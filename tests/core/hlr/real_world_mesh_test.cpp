@@ -40,6 +40,16 @@ Solid noisy(const Solid& s, Point3 center, double amount, Rng& r) {
   return out;
 }
 
+// The two triangles of each cell of an n × n grid of vertices numbered row by row.
+void grid_triangles(int n, std::vector<std::vector<VertexIndex>>& faces) {
+  for (int j = 0; j + 1 < n; ++j)
+    for (int i = 0; i + 1 < n; ++i) {
+      const auto a = static_cast<VertexIndex>(j * n + i), row = static_cast<VertexIndex>(n);
+      faces.push_back({a, a + 1, a + row + 1});
+      faces.push_back({a, a + row + 1, a + row});
+    }
+}
+
 std::vector<Named> meshes() {
   Rng r(4200);
   std::vector<Named> all;
@@ -69,12 +79,7 @@ std::vector<Named> meshes() {
         v.push_back(
             {x, y, 0.15 * std::sin(3 * x) * std::cos(2 * y) + (x + 0.3 * y > 0.2 ? 0.4 : 0) + r(0, 0.03)});
       }
-    for (int j = 0; j + 1 < kN; ++j)
-      for (int i = 0; i + 1 < kN; ++i) {
-        const auto a = static_cast<VertexIndex>(j * kN + i);
-        f.push_back({a, a + 1, a + kN + 1});
-        f.push_back({a, a + kN + 1, a + kN});
-      }
+    grid_triangles(kN, f);
     one("terrain", std::make_shared<const Solid>(mesh_solid(v, f)), {0, 0, 0.2}, 1.4);
   }
   {  // two noisy balls interpenetrating, exported as one mesh
@@ -103,12 +108,7 @@ std::vector<Named> meshes() {
     for (int j = 0; j < kN; ++j)
       for (int i = 0; i < kN; ++i)
         v.push_back({i / 5.0 - 1 + r(-0.05, 0.05), j / 5.0 - 1 + r(-0.05, 0.05), r(-0.25, 0.25)});
-    for (int j = 0; j + 1 < kN; ++j)
-      for (int i = 0; i + 1 < kN; ++i) {
-        const auto a = static_cast<VertexIndex>(j * kN + i);
-        f.push_back({a, a + 1, a + kN + 1});
-        f.push_back({a, a + kN + 1, a + kN});
-      }
+    grid_triangles(kN, f);
     one("crumpled", std::make_shared<const Solid>(mesh_solid(v, f)), {0, 0, 0}, 1.4);
   }
   one("stairs", triangulated(gen::stairs(5, 1, 0.2, 0.3)), {0.75, 0.5, 0.5}, 1.2);
