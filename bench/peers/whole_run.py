@@ -78,7 +78,9 @@ def main():
                 f.write("({:.9g},{:.9g},{:.9g}), [0,0,1]) then perspective({:.9g}) }} {{scene}}\n".format(
                     *centre, 3 * size))
             commands = {
-                "ours": [hlrscript, script, "-o", os.path.join(work, name + ".pdf")],
+                # The script lives in a temporary folder; the mesh beside it must be let in.
+                "ours": [hlrscript, script, "-o", os.path.join(work, name + ".pdf"),
+                         "--allow-path", os.path.dirname(os.path.abspath(mesh))],
                 "sketch": ["sketch", "-o", os.path.join(work, name + ".tex"), scene],
             }
             times = {k: [] for k in commands}
