@@ -1,7 +1,5 @@
 #include "core/hlr/frame_setup.hpp"
 
-#include "core/geometry/exact_predicates.hpp"
-
 #include <algorithm>
 #include <cmath>
 
@@ -191,7 +189,8 @@ void face_facing(const Solid& solid, const ViewSide& view, double length_toleran
       s = -dot(n, view.direction);
       tol = Tolerance::kRelative;
     }
-    facing[f] = s > tol ? 1 : (s < -tol ? -1 : (is_triangle(solid.faces[f]) ? exact_facing(solid, f, view) : 0));
+    facing[f] =
+        s > tol ? 1 : (s < -tol ? -1 : (is_triangle(solid.faces[f]) ? exact_facing(solid, f, view) : 0));
   }
 }
 

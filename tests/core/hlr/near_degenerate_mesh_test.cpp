@@ -50,7 +50,8 @@ Scene scene_of(const Mesh& mesh) {
     for (std::size_t f = begin; f < stop; ++f) {
       faces.emplace_back();
       for (VertexIndex v : mesh.faces[f]) {
-        if (index[v] == kUnused) index[v] = static_cast<VertexIndex>(vertices.size()), vertices.push_back(mesh.vertices[v]);
+        if (index[v] == kUnused)
+          index[v] = static_cast<VertexIndex>(vertices.size()), vertices.push_back(mesh.vertices[v]);
         faces.back().push_back(index[v]);
       }
     }
