@@ -10,9 +10,13 @@ bool ExactTriangleTest::prepare(const FrameSetup& setup, const Camera& camera, c
   const Solid& occluder = *setup.scene->objects[o.object].solid;
   const Face& face = occluder.faces[o.face];
   if (face.rings.size() != 1 || face.rings[0].vertices.size() != 3) return false;
-  // Its picture polygon must be the triangle itself, corner k at point k (not cut by the near plane).
+  // Its picture polygon must be the triangle itself, corner k at point k (not cut by the near plane): the
+  // seams are read by point.
   if (o.ring_count != 1 || setup.ring_ends[o.first_ring] - o.first_point != 3) return false;
-  for (int k = 0; k < 3; ++k) corner_[k] = occluder.vertices[face.rings[0].vertices[k]];
+  for (int k = 0; k < 3; ++k) {
+    corner_[k] = occluder.vertices[face.rings[0].vertices[k]];
+    if (!(camera.project(corner_[k]) == setup.polygon_points[o.first_point + k])) return false;
+  }
   // A candidate clipped by the near plane no longer ends at its vertices: mapping them again gives the
   // very doubles of its view points only when it was not.
   const Solid& own = *setup.scene->objects[c.object].solid;

@@ -110,7 +110,7 @@ void add_hidden_intervals(const FrameSetup& setup, const Camera& camera, const C
     }
   }
   // 1. Behind the plane: g(t) = eye_side·(n·v(t) + offset) < 0, linear in t. Beyond the tolerance the
-  //    sign of g is certain; within it, a triangle's side is decided exactly (exact_plane_sides).
+  //    sign of g is certain; within it, a triangle's side is decided exactly (decide_within_tolerance).
   const double g0 = o.eye_side * (dot(o.normal, to_vector(c.view0)) + o.offset);
   const double g1 = o.eye_side * (dot(o.normal, to_vector(c.view1)) + o.offset);
   int side0 = g0 > ltol ? 1 : (g0 < -ltol ? -1 : 0), side1 = g1 > ltol ? 1 : (g1 < -ltol ? -1 : 0);
@@ -163,7 +163,6 @@ void add_hidden_intervals(const FrameSetup& setup, const Camera& camera, const C
   for (std::uint32_t k = 0; k < o.ring_count; ++k)
     ends[k] = setup.ring_ends[o.first_ring + k] - o.first_point;
   const double rlen = std::sqrt(r2);
-  // Breaks from ring edge p→q.
   // Lines nearly parallel in the picture cross where floating point puts them only to within u / angle
   // of their length: a triangle's side then gets its exact crossing too (extra breaks are harmless).
   int exact_state = 0;  // 0 untried, 1 ready, −1 unavailable
@@ -179,6 +178,7 @@ void add_hidden_intervals(const FrameSetup& setup, const Camera& camera, const C
     const double s = picture_param(c, camera, t);
     if (s > s_lo && s < s_hi) breaks.push_back(s);
   };
+  // Breaks from ring edge i, p→q.
   auto test_edge = [&](std::uint32_t i, Point2 p, Point2 q) {
     const Vector2 e = q - p;
     const Vector2 ap = p - a;
