@@ -331,8 +331,10 @@ FrameSetup prepare_frame(const Scene& scene, const Camera& camera, bool keep_cul
     });
     // A closed solid's back faces hide nothing its front faces do not, and what lies on them is hidden —
     // while the surface never winds negatively round a point. A solid passing through itself may (a fold
-    // in a scan turns a patch inside out), so its back faces stay occluders and its back lines candidates.
-    cull[o] = solid.closed && wholly_in_front(view_vertices, camera, ltol) && solid.self_crossings().empty();
+    // in a scan turns a patch inside out), and so may one folded flat onto itself (Solid::folded), so
+    // their back faces stay occluders and their back lines candidates.
+    cull[o] = solid.closed && !solid.folded && wholly_in_front(view_vertices, camera, ltol) &&
+              solid.self_crossings().empty();
   };
   std::size_t faces = 0;
   for (const SceneObject& o : scene.objects) faces += o.solid->faces.size();

@@ -98,6 +98,11 @@ struct Solid {
   // Every boundary edge has exactly two faces traversing it in opposite directions: the surface encloses
   // a volume, so back faces may be culled while the solid lies wholly in front of the eye.
   bool closed = false;
+  // Some edge joins two triangles folded flat onto each other: exactly in one plane, on the same side of
+  // the edge (a concave face split into a fan folds a triangle back over its neighbours). The surface then
+  // winds negatively round the points under the fold, as round a fold through itself, so its back faces
+  // are not culled.
+  bool folded = false;
   double crease_angle_deg = 0;  // the crease angle the edge kinds were classified with
 
   SelfCrossingCache self_crossing_cache;

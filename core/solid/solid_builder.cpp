@@ -9,6 +9,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "core/geometry/exact_predicates.hpp"
 #include "core/parallel.hpp"
 #include "core/solid/builder_detail.hpp"
 
@@ -165,6 +166,33 @@ void SolidBuilder::reserve(std::size_t vertices, std::size_t faces, std::size_t 
   face_is_loop_.reserve(face_is_loop_.size() + faces);
 }
 
+namespace {
+
+// Whether the two triangles on edge e lie in one plane exactly (their far corners coplanar with it) and
+// on the same side of it: one folded back over the other.
+bool folded_flat(const Solid& solid, const SolidEdge& e) {
+  const auto& left = solid.faces[static_cast<std::size_t>(e.left)];
+  const auto& right = solid.faces[static_cast<std::size_t>(e.right)];
+  if (left.rings.size() != 1 || right.rings.size() != 1 || left.rings[0].vertices.size() != 3 ||
+      right.rings[0].vertices.size() != 3)
+    return false;
+  // Opposite normals first (cheap): faces folded flat face opposite ways.
+  if (dot(solid.planes[static_cast<std::size_t>(e.left)].normal,
+          solid.planes[static_cast<std::size_t>(e.right)].normal) >= 0)
+    return false;
+  auto far_corner = [&](const Face& f) {
+    for (VertexIndex v : f.rings[0].vertices)
+      if (v != e.v0 && v != e.v1) return v;
+    return f.rings[0].vertices[0];
+  };
+  const Point3 a = solid.vertices[e.v0], b = solid.vertices[e.v1];
+  const Point3 c = solid.vertices[far_corner(left)], d = solid.vertices[far_corner(right)];
+  if (orient3d(a, b, c, d) != 0) return false;
+  return dot(cross(b - a, c - a), cross(b - a, d - a)) > 0;
+}
+
+}  // namespace
+
 SolidBuildResult SolidBuilder::build() const {
   using namespace solid_detail;
   SolidBuildResult result;
@@ -298,6 +326,10 @@ SolidBuildResult SolidBuilder::build() const {
   solid.crease_angle_deg = options.crease_angle_deg;
   build_edge_table(solid, edges, valid, sizes, lines_, vertices, options, diagnostics);
   solid.vertices = vertices.input_of.empty() ? positions_ : std::move(vertices.kept);
+  // Triangles folded flat onto each other: in one plane exactly, on the same side of their edge.
+  solid.folded = std::any_of(solid.edges.begin(), solid.edges.end(), [&](const SolidEdge& e) {
+    return e.left != kNoFace && e.right != kNoFace && e.left != e.right && folded_flat(solid, e);
+  });
 
   if (!diagnostics.has_errors()) result.solid = std::move(solid);
   return result;
