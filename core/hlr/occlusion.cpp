@@ -45,11 +45,8 @@ bool leaves_triangle_corner(const Point2* t, Point2 a, Point2 b) {
 // Sides of the candidate's ends that lie within the tolerance of the occluder's plane (side 0), decided
 // exactly where ExactTriangleTest can; `root` set when both were within it (g is then rounding, and so
 // would its root be). Rare, and kept out of the hot path.
-[[gnu::noinline]] void decide_within_tolerance(const FrameSetup& setup, const Camera& camera,
-                                               const Candidate& c, const Occluder& o, int& side0, int& side1,
+[[gnu::noinline]] void decide_within_tolerance(const ExactTriangleTest& exact, int& side0, int& side1,
                                                double& root) {
-  ExactTriangleTest exact;
-  if (!exact.prepare(setup, camera, c, o)) return;
   const bool both = side0 == 0 && side1 == 0;
   if (side0 == 0) side0 = exact.side(0);
   if (side1 == 0) side1 = exact.side(1);
@@ -57,17 +54,13 @@ bool leaves_triangle_corner(const Point2* t, Point2 a, Point2 b) {
 }
 
 // A piece whose midpoint lies within the tolerance of the occluder's outline in the picture, or of a seam:
-// 1 if inside, 0 if not, decided exactly where ExactTriangleTest can (−1 where it cannot). Exactly on a
-// seam is inside: the neighbour across it covers the rest.
+// inside or not, exactly. Exactly on a seam is inside: the neighbour across it covers the rest.
 template <typename IsSeam>
-[[gnu::noinline]] int exactly_inside(const FrameSetup& setup, const Camera& camera, const Candidate& c,
-                                     const Occluder& o, double s_mid, IsSeam&& is_seam) {
-  ExactTriangleTest exact;
-  if (!exact.prepare(setup, camera, c, o)) return -1;
+[[gnu::noinline]] bool exactly_inside(const ExactTriangleTest& exact, double t_mid, IsSeam&& is_seam) {
   int side = -1;
-  const PointClass where = exact.shadow(view_param(c, camera, s_mid), side);
-  if (where == PointClass::Inside) return 1;
-  return where == PointClass::Boundary && side >= 0 && is_seam(static_cast<std::uint32_t>(side)) ? 1 : 0;
+  const PointClass where = exact.shadow(t_mid, side);
+  return where == PointClass::Inside ||
+         (where == PointClass::Boundary && side >= 0 && is_seam(static_cast<std::uint32_t>(side)));
 }
 
 }  // namespace
@@ -114,8 +107,19 @@ void add_hidden_intervals(const FrameSetup& setup, const Camera& camera, const C
   const double g0 = o.eye_side * (dot(o.normal, to_vector(c.view0)) + o.offset);
   const double g1 = o.eye_side * (dot(o.normal, to_vector(c.view1)) + o.offset);
   int side0 = g0 > ltol ? 1 : (g0 < -ltol ? -1 : 0), side1 = g1 > ltol ? 1 : (g1 < -ltol ? -1 : 0);
+  // The exact fallbacks share one ExactTriangleTest, prepared the first time one is needed.
+  int exact_state = 0;  // 0 untried, 1 ready, −1 unavailable
+  std::optional<ExactTriangleTest> exact;
+  auto exact_test = [&]() -> const ExactTriangleTest* {
+    if (exact_state == 0) {
+      exact.emplace();
+      exact_state = exact->prepare(setup, camera, c, o) ? 1 : -1;
+    }
+    return exact_state > 0 ? &*exact : nullptr;
+  };
   double root = -1;  // where it crosses the plane, when decided exactly
-  if (side0 == 0 || side1 == 0) decide_within_tolerance(setup, camera, c, o, side0, side1, root);
+  if (side0 == 0 || side1 == 0)
+    if (const ExactTriangleTest* e = exact_test()) decide_within_tolerance(*e, side0, side1, root);
   if (side0 >= 0 && side1 >= 0) return;  // in front of or on the plane throughout
   double t_lo = 0, t_hi = 1;
   if (side0 >= 0) {
@@ -165,15 +169,10 @@ void add_hidden_intervals(const FrameSetup& setup, const Camera& camera, const C
   const double rlen = std::sqrt(r2);
   // Lines nearly parallel in the picture cross where floating point puts them only to within u / angle
   // of their length: a triangle's side then gets its exact crossing too (extra breaks are harmless).
-  int exact_state = 0;  // 0 untried, 1 ready, −1 unavailable
-  std::optional<ExactTriangleTest> exact;
   auto exact_break = [&](std::uint32_t i) {
-    if (exact_state == 0) {
-      exact.emplace();
-      exact_state = exact->prepare(setup, camera, c, o) ? 1 : -1;
-    }
-    if (exact_state < 0) return;
-    const double t = exact->sight_crossing(static_cast<int>(i));
+    const ExactTriangleTest* e = exact_test();
+    if (!e) return;
+    const double t = e->sight_crossing(static_cast<int>(i));
     if (t < 0) return;
     const double s = picture_param(c, camera, t);
     if (s > s_lo && s < s_hi) breaks.push_back(s);
@@ -218,8 +217,9 @@ void add_hidden_intervals(const FrameSetup& setup, const Camera& camera, const C
         grid ? grid->classify(mid, ptol, is_seam) : classify_point(pts, ring_ends, mid, ptol, is_seam);
     bool inside = where == PointClass::Inside;
     if (where == PointClass::Boundary || where == PointClass::Seam) {
-      const int exact = exactly_inside(setup, camera, c, o, 0.5 * (s0 + s1), is_seam);
-      inside = exact < 0 ? where == PointClass::Seam : exact == 1;
+      const ExactTriangleTest* e = exact_test();
+      inside =
+          e ? exactly_inside(*e, view_param(c, camera, 0.5 * (s0 + s1)), is_seam) : where == PointClass::Seam;
     }
     if (inside) {
       if (open_lo < 0) open_lo = s0;
