@@ -166,6 +166,14 @@ FrameResult render_frame(const Scene& scene, const Camera& camera, const HlrOpti
       throw FrameTimedOut();
   };
   check_cancel();
+  FrameStats::Stages ms;
+  auto last = std::chrono::steady_clock::now();
+  auto lap = [&last] {  // ms since the last lap
+    const auto now = std::chrono::steady_clock::now();
+    const double d = std::chrono::duration<double, std::milli>(now - last).count();
+    last = now;
+    return d;
+  };
   // Where a solid passes through itself is searched for once per solid (and kept with it). An open
   // solid's edges do not need it, so the search runs beside their preparation and examination and takes
   // up what of that work runs on one core; the lines it finds are examined last. Only in the caller's
@@ -195,13 +203,16 @@ FrameResult render_frame(const Scene& scene, const Camera& camera, const HlrOpti
     crossing_search.run([&scene] {
       for (const SceneObject& o : scene.objects) o.solid->self_crossings();
     });
+  ms.self_crossings = lap();
 
   FrameSetup setup = prepare_frame(scene, camera, options.include_hidden, options.threads);
   check_cancel();
+  ms.setup = lap();
   // Only what lies inside the picture frame is examined.
   Rect2 domain = Rect2::none();
   const std::size_t edges = clip_candidates(setup, 0, camera, domain);
   auto grid = std::make_unique<const FaceGrid>(setup, domain, options.threads);
+  ms.grid = lap();
 
   const Affine3 world_from_view = camera.viewFromWorld.inverse();
   // One worker (scratch buffers, stamps) per thread that takes part; chunks go to whichever is free.
@@ -271,9 +282,11 @@ FrameResult render_frame(const Scene& scene, const Camera& camera, const HlrOpti
   std::vector<Examined> runs;
   runs.push_back(examine(0, static_cast<std::uint32_t>(edges)));
   check_cancel();
+  ms.examine = lap();
 
   if (options.intersection_lines) {
     search.wait();
+    ms.self_crossings += lap();
     append_intersection_candidates(setup, scene, camera, options.include_hidden);
     Rect2 wider = domain;
     const std::size_t end = clip_candidates(setup, edges, camera, wider);
@@ -300,6 +313,8 @@ FrameResult render_frame(const Scene& scene, const Camera& camera, const HlrOpti
   result.segments = in_candidate_order(runs, n);
   if (options.coincident_once) remove_covered_pieces(result.segments, options.threads);
   result.stats.face_tests = face_tests;
+  ms.finish = lap();
+  result.stats.ms = ms;
   result.stats.visible_segments = static_cast<std::size_t>(std::count_if(
       result.segments.begin(), result.segments.end(), [](const VisibleSegment& s) { return !s.hidden; }));
   return result;

@@ -7,7 +7,9 @@
 // decided by exact orientation predicates (corner_crossing).
 #include <algorithm>
 #include <cmath>
+#include <bit>
 #include <cstdint>
+#include <limits>
 #include <utility>
 #include <vector>
 
@@ -35,9 +37,10 @@ bool pair_is_met_here(std::uint64_t a, std::uint64_t b) { return (((a | b) >> kF
 
 // Sorts entries by their cell, keeping the face order within a cell, which they were made in: two stable
 // counting passes of 15 bits — linear, where a comparison sort was the finder's largest cost.
-void sort_by_cell(std::vector<std::uint64_t>& entries) {
-  std::vector<std::uint64_t> buffer(entries.size());
-  std::vector<std::uint32_t> counts(1u << 15);
+void sort_by_cell(std::vector<std::uint64_t>& entries, std::vector<std::uint64_t>& buffer,
+                  std::vector<std::uint32_t>& counts) {
+  buffer.resize(entries.size());
+  counts.resize(1u << 15);
   for (const int shift : {kCellShift, kCellShift + 15}) {
     std::fill(counts.begin(), counts.end(), 0u);
     for (std::uint64_t e : entries) ++counts[(e >> shift) & 0x7fff];
@@ -47,16 +50,47 @@ void sort_by_cell(std::vector<std::uint64_t>& entries) {
     entries.swap(buffer);
   }
 }
+void sort_by_cell(std::vector<std::uint64_t>& entries) {
+  std::vector<std::uint64_t> buffer;
+  std::vector<std::uint32_t> counts;
+  sort_by_cell(entries, buffer, counts);
+}
 
-// Per face, what the pair tests read, in one cache line: its box and, for a face of one ring of up to four
-// vertices (the common case), its vertices, the first repeated to fill four (repeats match nothing new),
-// so that telling neighbours apart touches no other memory. A larger face has v[0] = kLarge and v[1] the
-// index of its sorted vertices in Finder::big_.
+// The float next to f towards −∞, for a finite f: one step of its bit pattern.
+float float_step_down(float f) {
+  if (f == 0) return -std::numeric_limits<float>::denorm_min();
+  const auto bits = std::bit_cast<std::uint32_t>(f);
+  return std::bit_cast<float>(f > 0 ? bits - 1 : bits + 1);
+}
+float float_below(double x) {  // the largest float ≤ x (finite x; beyond the floats' range, their max)
+  const auto f = static_cast<float>(x);
+  if (static_cast<double>(f) <= x) return f;
+  return std::isinf(f) ? std::numeric_limits<float>::max() : float_step_down(f);
+}
+float float_above(double x) { return -float_below(-x); }
+
+// Per face, what the pair tests read, in 40 bytes: its box grown by the coincidence tolerance and rounded
+// outward to floats (never smaller: what it lets through is decided in doubles after), and, for a face of
+// one ring of up to four vertices (the common case), its vertices, the first repeated to fill four (repeats
+// match nothing new), so that telling neighbours apart touches no other memory. A larger face has
+// v[0] = kLarge and v[1] the index of its sorted vertices in Finder::big_.
 constexpr VertexIndex kLarge = ~VertexIndex{0};
-struct alignas(64) FaceInfo {
-  Box3 box;
+struct FaceInfo {
+  float lo[3], hi[3];
   VertexIndex v[4] = {0, 0, 0, 0};
   bool small() const { return v[0] != kLarge; }
+  bool overlaps(const FaceInfo& o) const {
+    return lo[0] <= o.hi[0] && o.lo[0] <= hi[0] && lo[1] <= o.hi[1] && o.lo[1] <= hi[1] && lo[2] <= o.hi[2] &&
+           o.lo[2] <= hi[2];
+  }
+};
+
+// A face met in a grid cell: a cell's faces are copied together once, where fetching both FaceInfos of
+// every pair met (nearly all of them neighbours, sharing a vertex) waited on memory.
+struct CellFace {
+  FaceInfo info;
+  FaceIndex face;
+  std::uint32_t first;  // the entry's flags: on which axes the cell is the face's first
 };
 
 class Finder {
@@ -65,33 +99,49 @@ class Finder {
     double extent = 0;
     for (Point3 p : solid.vertices) extent = std::max({extent, std::abs(p.x), std::abs(p.y), std::abs(p.z)});
     tol_ = Tolerance::for_extent(extent).length;
-    info_.resize(solid.faces.size());
-    warp_.assign(solid.faces.size(), 0.0);
-    for (std::size_t f = 0; f < solid.faces.size(); ++f) {
-      const Face& face = solid.faces[f];
-      FaceInfo& info = info_[f];
-      for (const Ring& ring : face.rings)
-        for (VertexIndex v : ring.vertices) {
-          info.box.include(solid.vertices[v]);
-          warp_[f] = std::max(warp_[f], std::abs(solid.planes[f].signed_distance(solid.vertices[v])));
-        }
-      const auto& outer = face.rings[0].vertices;
-      if (face.rings.size() == 1 && outer.size() <= 4) {
-        std::copy(outer.begin(), outer.end(), info.v);
-        std::fill(info.v + outer.size(), info.v + 4, outer[0]);
-      } else {  // sorted once: a large face meets many neighbours
-        big_.emplace_back();
-        info.v[0] = kLarge;
-        info.v[1] = static_cast<VertexIndex>(big_.size() - 1);
+    const std::size_t n = solid.faces.size();
+    info_.resize(n);
+    warp_.assign(n, 0.0);
+    constexpr std::size_t kChunk = 8192;
+    parallel_chunks((n + kChunk - 1) / kChunk, threads_for(n, 2 * kChunk, 0), [&](std::size_t k) {
+      for (std::size_t f = k * kChunk; f < std::min(n, (k + 1) * kChunk); ++f) {
+        const Face& face = solid.faces[f];
+        FaceInfo& info = info_[f];
+        Box3 box;
         for (const Ring& ring : face.rings)
-          big_.back().insert(big_.back().end(), ring.vertices.begin(), ring.vertices.end());
-        std::sort(big_.back().begin(), big_.back().end());
+          for (VertexIndex v : ring.vertices) {
+            box.include(solid.vertices[v]);
+            warp_[f] = std::max(warp_[f], std::abs(solid.planes[f].signed_distance(solid.vertices[v])));
+          }
+        const auto& outer = face.rings[0].vertices;
+        if (face.rings.size() == 1 && outer.size() <= 4) {
+          std::copy(outer.begin(), outer.end(), info.v);
+          std::fill(info.v + outer.size(), info.v + 4, outer[0]);
+        } else {
+          info.v[0] = kLarge;  // its sorted vertices are listed below
+        }
+        for (int a = 0; a < 3; ++a) {
+          info.lo[a] = float_below(box.lo[a] - tol_);
+          info.hi[a] = float_above(box.hi[a] + tol_);
+        }
       }
+    });
+    for (std::size_t f = 0; f < n; ++f) {
+      if (info_[f].small()) continue;
+      // Sorted once: a large face meets many neighbours.
+      big_.emplace_back();
+      info_[f].v[1] = static_cast<VertexIndex>(big_.size() - 1);
+      for (const Ring& ring : solid.faces[f].rings)
+        big_.back().insert(big_.back().end(), ring.vertices.begin(), ring.vertices.end());
+      std::sort(big_.back().begin(), big_.back().end());
     }
   }
 
   // What one thread finds, with its own buffers.
   struct Part {
+    std::vector<std::uint64_t> entries, sort_buffer;  // a slab's, and room to sort them
+    std::vector<std::uint32_t> sort_counts;
+    std::vector<CellFace> local;      // a cell's faces
     std::vector<std::uint64_t> cell;  // a crowded cell's entries, for the sweep
     FaceCrossingScratch scratch;
     std::vector<CrossingPiece> pieces;
@@ -103,7 +153,7 @@ class Finder {
     if (a > b) std::swap(a, b);
     const FaceInfo& ia = info_[a];
     const FaceInfo& ib = info_[b];
-    if (!ia.box.overlaps(ib.box, tol_)) return;
+    if (!ia.overlaps(ib)) return;
     const int shared = shared_vertices(ia, ib);
     if (shared >= 2) return;  // neighbours along an edge (or more): they meet there, not across
     if (shared == 1 && is_triangle(a) && is_triangle(b)) return;  // fan_pairs decides these
@@ -133,7 +183,9 @@ class Finder {
   }
 
   // Triangles that share one vertex, met vertex by vertex: each vertex's fan is read once, where the grid
-  // would fetch the same few triangles again for every pair. Vertices are shared out over the cores.
+  // would fetch the same few triangles again for every pair. The corners are listed by vertex in one pass
+  // over the faces, so that a fan's triangles are read from one place (a scan's faces come in no order
+  // round its vertices). Vertices are shared out over the cores.
   std::vector<SelfCrossing> fan_pairs() const {
     const std::size_t nv = solid_.vertices.size(), nf = info_.size();
     std::vector<std::uint32_t> first(nv + 1, 0);
@@ -141,32 +193,55 @@ class Finder {
       if (is_triangle(static_cast<FaceIndex>(f)))
         for (int k = 0; k < 3; ++k) ++first[info_[f].v[k] + 1];
     for (std::size_t v = 0; v < nv; ++v) first[v + 1] += first[v];
-    std::vector<FaceIndex> fan(first[nv]);
-    std::vector<std::uint32_t> fill(first.begin(), first.end() - 1);
-    for (std::size_t f = 0; f < nf; ++f)
-      if (is_triangle(static_cast<FaceIndex>(f)))
-        for (int k = 0; k < 3; ++k) fan[fill[info_[f].v[k]]++] = static_cast<FaceIndex>(f);
+    struct Corner {
+      FaceIndex face;
+      VertexIndex i1, i2;  // the triangle's other vertices, in ring order after the corner's
+    };
+    std::vector<Corner> corners(first[nv]);
+    {
+      std::vector<std::uint32_t> fill(first.begin(), first.end() - 1);
+      for (std::size_t f = 0; f < nf; ++f) {
+        if (!is_triangle(static_cast<FaceIndex>(f))) continue;
+        const VertexIndex* ring = info_[f].v;
+        for (int k = 0; k < 3; ++k)
+          corners[fill[ring[k]]++] = {static_cast<FaceIndex>(f), ring[(k + 1) % 3], ring[(k + 2) % 3]};
+      }
+    }
+    // Two triangles whose points (other than V) lie farther than this beyond each other's planes, measured
+    // with the normal of their own corner, lie beyond the coincidence tolerance of their stored planes too
+    // (the two normals differ by rounding, far below it), so corner_crossing would find nothing.
+    const double far = 2 * tol_;
     constexpr std::size_t kChunk = 8192;
     std::vector<Part> parts((nv + kChunk - 1) / kChunk);
-    parallel_chunks(parts.size(), threads_for(fan.size(), 50000, 0), [&](std::size_t k) {
+    parallel_chunks(parts.size(), threads_for(corners.size(), 50000, 0), [&](std::size_t k) {
       Part& part = parts[k];
-      std::vector<FanTriangle> round;
+      struct Near {  // one triangle of the fan: its corner, the other points relative to V, its normal
+        const Corner* corner;
+        Vector3 e1, e2, normal;
+        double reach;  // far times the normal's length
+      };
+      std::vector<Near> round;
       for (std::size_t v = k * kChunk; v < std::min(nv, (k + 1) * kChunk); ++v) {
         if (first[v + 1] - first[v] < 2) continue;
+        const Point3 V = solid_.vertices[v];
         round.clear();
         for (std::uint32_t i = first[v]; i < first[v + 1]; ++i) {
-          const VertexIndex* ring = info_[fan[i]].v;
-          const int at = ring[0] == v ? 0 : (ring[1] == v ? 1 : 2);
-          const VertexIndex i1 = ring[(at + 1) % 3], i2 = ring[(at + 2) % 3];
-          round.push_back({fan[i], i1, i2, solid_.vertices[i1], solid_.vertices[i2], solid_.planes[fan[i]]});
+          const Corner& c = corners[i];
+          const Vector3 e1 = solid_.vertices[c.i1] - V, e2 = solid_.vertices[c.i2] - V;
+          const Vector3 normal = cross(e1, e2);
+          round.push_back({&c, e1, e2, normal, far * length(normal)});
         }
-        const Point3 V = solid_.vertices[v];
+        auto beyond = [](const Near& plane, const Near& t) {
+          const double d1 = dot(plane.normal, t.e1), d2 = dot(plane.normal, t.e2);
+          return (d1 > plane.reach && d2 > plane.reach) || (d1 < -plane.reach && d2 < -plane.reach);
+        };
         for (std::size_t i = 0; i < round.size(); ++i)
           for (std::size_t j = i + 1; j < round.size(); ++j) {
-            const FanTriangle &x = round[i], &y = round[j];
+            const Corner &x = *round[i].corner, &y = *round[j].corner;
             // Triangles sharing a second vertex share an edge: they meet along it, not across.
             if (x.i1 == y.i1 || x.i1 == y.i2 || x.i2 == y.i1 || x.i2 == y.i2) continue;
-            corner_crossing(x, y, V, part);
+            if (beyond(round[j], round[i]) || beyond(round[i], round[j])) continue;
+            corner_crossing(fan_triangle(x), fan_triangle(y), V, part);
           }
       }
     });
@@ -177,71 +252,119 @@ class Finder {
 
   // The grid: cells of the median face size (at least 1/1000 of the solid's size on each axis, so cell
   // numbers fit 10 bits); a face covering more than kMaxCells cells is met against every face instead.
-  // Cells are shared out over the cores; what each finds is joined in cell order.
+  // The grid is cut into slabs of whole z planes, each listed, sorted and examined on its own, so that
+  // the cores share all of it; what each finds is joined in slab order.
   std::vector<SelfCrossing> grid_pairs() {
     const std::size_t n = info_.size();
     Box3 all;
     std::vector<double> sizes(n);
     for (std::size_t f = 0; f < n; ++f) {
-      all.include(info_[f].box.lo);
-      all.include(info_[f].box.hi);
-      sizes[f] = info_[f].box.largest_side();
+      const FaceInfo& b = info_[f];  // grown by the tolerance
+      all.include({b.lo[0], b.lo[1], b.lo[2]});
+      all.include({b.hi[0], b.hi[1], b.hi[2]});
+      sizes[f] = std::max({b.hi[0] - b.lo[0], b.hi[1] - b.lo[1], b.hi[2] - b.lo[2]});
     }
     std::nth_element(sizes.begin(), sizes.begin() + static_cast<std::ptrdiff_t>(n / 2), sizes.end());
     const double cell = std::max({sizes[n / 2], all.largest_side() / 1000, tol_, Tolerance::kFloor});
     auto index = [&](double v, double origin) {
       return static_cast<std::uint16_t>(std::clamp(std::floor((v - origin) / cell), 0.0, 1023.0));
     };
-    // One entry per (cell, face), packed as above, so a sort groups each cell's faces in face order. Room
-    // for eight cells a face (a box at most a cell wide on each axis): only what is written is touched.
-    std::vector<std::uint64_t> entries;
-    entries.reserve(n * 8);
-    std::vector<FaceIndex> big;
-    constexpr int kMaxCells = 64;
+    auto cell_key = [](std::uint64_t x, std::uint64_t y, std::uint64_t z) { return x | (y << 10) | (z << 20); };
+    // The faces ranked by the cell their box begins in (z first): a slab's faces are then a run of ranks,
+    // and a cell's lie near each other in cell_faces, where in a scan's own order they were spread over
+    // the whole mesh and every one fetched from memory.
+    std::vector<std::uint64_t> ranked(n);
     for (std::size_t f = 0; f < n; ++f) {
-      const Box3& b = info_[f].box;
+      const FaceInfo& c = info_[f];
+      ranked[f] = cell_key(index(c.lo[0], all.lo.x), index(c.lo[1], all.lo.y), index(c.lo[2], all.lo.z))
+                      << kCellShift |
+                  f;
+    }
+    sort_by_cell(ranked);
+    // Per rank: the face's FaceInfo and the cells its grown box covers.
+    struct Cells {
       std::uint16_t lo[3], hi[3];
-      lo[0] = index(b.lo.x - tol_, all.lo.x), hi[0] = index(b.hi.x + tol_, all.lo.x);
-      lo[1] = index(b.lo.y - tol_, all.lo.y), hi[1] = index(b.hi.y + tol_, all.lo.y);
-      lo[2] = index(b.lo.z - tol_, all.lo.z), hi[2] = index(b.hi.z + tol_, all.lo.z);
-      const int cells = (hi[0] - lo[0] + 1) * (hi[1] - lo[1] + 1) * (hi[2] - lo[2] + 1);
-      if (cells > kMaxCells) {
-        big.push_back(static_cast<FaceIndex>(f));
-        continue;
+    };
+    std::vector<FaceIndex> face_at(n);
+    std::vector<FaceInfo> cell_faces(n);
+    std::vector<Cells> cells(n);
+    constexpr std::size_t kRanks = 8192;
+    parallel_chunks((n + kRanks - 1) / kRanks, threads_for(n, 2 * kRanks, 0), [&](std::size_t k) {
+      for (std::size_t r = k * kRanks; r < std::min(n, (k + 1) * kRanks); ++r) {
+        face_at[r] = face_of(ranked[r]);
+        const FaceInfo& c = cell_faces[r] = info_[face_at[r]];
+        for (int a = 0; a < 3; ++a)
+          cells[r].lo[a] = index(c.lo[a], all.lo[a]), cells[r].hi[a] = index(c.hi[a], all.lo[a]);
       }
-      for (std::uint64_t x = lo[0]; x <= hi[0]; ++x)
-        for (std::uint64_t y = lo[1]; y <= hi[1]; ++y)
-          for (std::uint64_t z = lo[2]; z <= hi[2]; ++z) {
-            const std::uint64_t first =
-                (x == lo[0] ? 1u : 0u) | (y == lo[1] ? 2u : 0u) | (z == lo[2] ? 4u : 0u);
-            entries.push_back(((x | (y << 10) | (z << 20)) << kCellShift) | first << kFirstShift | f);
-          }
+    });
+    constexpr int kMaxCells = 64;
+    auto is_big = [&](std::size_t r) {
+      const Cells& c = cells[r];
+      return (c.hi[0] - c.lo[0] + 1) * (c.hi[1] - c.lo[1] + 1) * (c.hi[2] - c.lo[2] + 1) > kMaxCells;
+    };
+    std::vector<FaceIndex> big;
+    int reach = 0;  // the most z planes past its first that a face's box spans
+    for (std::size_t r = 0; r < n; ++r) {
+      if (is_big(r))
+        big.push_back(face_at[r]);
+      else
+        reach = std::max(reach, cells[r].hi[2] - cells[r].lo[2]);
     }
-    sort_by_cell(entries);
-    // Chunks of whole cells, about kChunk entries each.
-    constexpr std::size_t kChunk = 4096;
-    std::vector<std::size_t> bounds{0};
-    for (std::size_t i = kChunk; i < entries.size(); i += kChunk) {
-      while (i < entries.size() && cell_of(entries[i]) == cell_of(entries[i - 1])) ++i;
-      if (i < entries.size() && i > bounds.back()) bounds.push_back(i);
+    // Slabs of whole z planes, about kSlabFaces faces beginning in each.
+    constexpr std::size_t kSlabFaces = 4096;
+    std::vector<std::size_t> slab_ranks{0};  // the first rank beginning in each slab
+    for (std::size_t r = kSlabFaces; r < n; r += kSlabFaces) {
+      while (r < n && cells[r].lo[2] == cells[r - 1].lo[2]) ++r;
+      if (r < n && r > slab_ranks.back()) slab_ranks.push_back(r);
     }
-    bounds.push_back(entries.size());
-    std::vector<Part> parts(bounds.size() - 1);
-    parallel_chunks(parts.size(), threads_for(entries.size(), 50000, 0), [&](std::size_t k) {
+    slab_ranks.push_back(n);
+    std::vector<Part> parts(slab_ranks.size() - 1);
+    parallel_chunks(parts.size(), threads_for(n, 8192, 0), [&](std::size_t k) {
       Part& part = parts[k];
-      for (std::size_t i = bounds[k]; i < bounds[k + 1];) {
-        const std::uint64_t cell = cell_of(entries[i]);
+      const int z0 = cells[slab_ranks[k]].lo[2];
+      const int z1 = slab_ranks[k + 1] < n ? cells[slab_ranks[k + 1]].lo[2] : 1024;  // planes [z0, z1)
+      // Faces beginning up to `reach` planes below the slab may reach into it.
+      std::size_t from = slab_ranks[k];
+      while (from > 0 && cells[from - 1].lo[2] + reach >= z0) --from;
+      // One entry per (cell, face rank), packed as above, so a sort groups each cell's faces in rank order.
+      std::vector<std::uint64_t>& entries = part.entries;
+      entries.clear();
+      for (std::size_t r = from; r < slab_ranks[k + 1]; ++r) {
+        const Cells& c = cells[r];
+        if (c.hi[2] < z0 || is_big(r)) continue;
+        const int zlo = std::max<int>(c.lo[2], z0), zhi = std::min<int>(c.hi[2], z1 - 1);
+        for (std::uint64_t x = c.lo[0]; x <= c.hi[0]; ++x)
+          for (std::uint64_t y = c.lo[1]; y <= c.hi[1]; ++y)
+            for (auto z = static_cast<std::uint64_t>(zlo); z <= static_cast<std::uint64_t>(zhi); ++z) {
+              const std::uint64_t first =
+                  (x == c.lo[0] ? 1u : 0u) | (y == c.lo[1] ? 2u : 0u) | (z == c.lo[2] ? 4u : 0u);
+              entries.push_back(cell_key(x, y, z) << kCellShift | first << kFirstShift | r);
+            }
+      }
+      sort_by_cell(entries, part.sort_buffer, part.sort_counts);
+      std::vector<CellFace>& local = part.local;
+      for (std::size_t i = 0; i < entries.size();) {
+        const std::uint64_t at = cell_of(entries[i]);
         std::size_t end = i + 1;
-        while (end < bounds[k + 1] && cell_of(entries[end]) == cell) ++end;
-        // A pair sharing several cells is examined in one of them only.
-        auto visit = [&](std::uint64_t a, std::uint64_t b) {
-          if (pair_is_met_here(a, b)) pair(face_of(a), face_of(b), part);
-        };
+        while (end < entries.size() && cell_of(entries[end]) == at) ++end;
         if (end - i > kSweepAbove) {
-          sweep_cell(entries, i, end, part.cell, visit);
+          // A pair sharing several cells is examined in one of them only.
+          part.cell.assign(entries.begin() + static_cast<std::ptrdiff_t>(i),
+                           entries.begin() + static_cast<std::ptrdiff_t>(end));
+          for (std::uint64_t& e : part.cell)  // ranks to faces
+            e = (e & ~kFaceMask) | static_cast<std::uint64_t>(face_at[face_of(e)]);
+          sweep_cell(part.cell, [&](std::uint64_t a, std::uint64_t b) {
+            if (pair_is_met_here(a, b)) pair(face_of(a), face_of(b), part);
+          });
         } else {
-          for (std::size_t p = i; p < end; ++p)
-            for (std::size_t q = p + 1; q < end; ++q) visit(entries[p], entries[q]);
+          local.clear();
+          for (std::size_t p = i; p < end; ++p) {
+            const std::size_t rank = face_of(entries[p]);
+            local.push_back({cell_faces[rank], face_at[rank], static_cast<std::uint32_t>(entries[p] >> kFirstShift) & 7});
+          }
+          for (std::size_t p = 0; p < local.size(); ++p)
+            for (std::size_t q = p + 1; q < local.size(); ++q)
+              if (may_cross(local[p], local[q])) pair(local[p].face, local[q].face, part);
         }
         i = end;
       }
@@ -249,11 +372,11 @@ class Finder {
     std::vector<SelfCrossing> found;
     for (Part& part : parts) found.insert(found.end(), part.found.begin(), part.found.end());
     Part rest;
-    std::vector<char> is_big(n, 0);
-    for (FaceIndex f : big) is_big[f] = 1;
+    std::vector<char> is_big_face(n, 0);
+    for (FaceIndex f : big) is_big_face[f] = 1;
     for (FaceIndex f : big)
       for (std::size_t g = 0; g < n; ++g)
-        if (!is_big[g] || static_cast<FaceIndex>(g) > f) pair(f, static_cast<FaceIndex>(g), rest);
+        if (!is_big_face[g] || static_cast<FaceIndex>(g) > f) pair(f, static_cast<FaceIndex>(g), rest);
     found.insert(found.end(), rest.found.begin(), rest.found.end());
     return found;
   }
@@ -263,37 +386,53 @@ class Finder {
   // median (the sides of a many-sided prism, as tall as the cells are wide) crowd into a few cells.
   static constexpr std::size_t kSweepAbove = 32;
 
-  // Calls visit(a, b) (two of the cell's entries) for the pairs of the cell's faces whose boxes overlap
+  // Calls visit(a, b) (two of the cell's entries, faces for ranks) for the pairs of the cell's faces whose boxes overlap
   // along the axis where they overlap least: sorted by the box's low end on it, each face meets the
   // faces starting before its box ends.
   template <typename Visit>
-  void sweep_cell(const std::vector<std::uint64_t>& entries, std::size_t begin, std::size_t end,
-                  std::vector<std::uint64_t>& cell, Visit&& visit) const {
-    cell.assign(entries.begin() + static_cast<std::ptrdiff_t>(begin),
-                entries.begin() + static_cast<std::ptrdiff_t>(end));
+  void sweep_cell(std::vector<std::uint64_t>& cell, Visit&& visit) const {
     int axis = 0;
     double best = -1;
     for (int k = 0; k < 3; ++k) {  // overlaps expected ∝ total box length / the range they spread over
-      const Box3& first = info_[face_of(cell[0])].box;
+      const FaceInfo& first = info_[face_of(cell[0])];
       double length = 0, lo = first.lo[k], hi = first.hi[k];
       for (std::uint64_t e : cell) {
-        const Box3& b = info_[face_of(e)].box;
+        const FaceInfo& b = info_[face_of(e)];
         length += b.hi[k] - b.lo[k];
-        lo = std::min(lo, b.lo[k]);
-        hi = std::max(hi, b.hi[k]);
+        lo = std::min<double>(lo, b.lo[k]);
+        hi = std::max<double>(hi, b.hi[k]);
       }
       const double score = (hi - lo) / std::max(length, Tolerance::kFloor);
       if (score > best) best = score, axis = k;
     }
     std::sort(cell.begin(), cell.end(), [&](std::uint64_t a, std::uint64_t b) {
-      const double la = info_[face_of(a)].box.lo[axis], lb = info_[face_of(b)].box.lo[axis];
+      const float la = info_[face_of(a)].lo[axis], lb = info_[face_of(b)].lo[axis];
       return la < lb || (la == lb && face_of(a) < face_of(b));
     });
     for (std::size_t p = 0; p < cell.size(); ++p) {
-      const double reach = info_[face_of(cell[p])].box.hi[axis] + 2 * tol_;
-      for (std::size_t q = p + 1; q < cell.size() && info_[face_of(cell[q])].box.lo[axis] <= reach; ++q)
+      const float reach = info_[face_of(cell[p])].hi[axis];  // the boxes are grown by the tolerance
+      for (std::size_t q = p + 1; q < cell.size() && info_[face_of(cell[q])].lo[axis] <= reach; ++q)
         visit(cell[p], cell[q]);
     }
+  }
+
+  // Whether pair() may find a crossing of two faces met in a cell, from what the cell holds: the pair is
+  // met in this cell (of those the two share), their boxes overlap, and, between faces of up to four
+  // vertices, they share no edge and are not two triangles at one vertex (fan_pairs takes those).
+  static bool may_cross(const CellFace& cell_a, const CellFace& cell_b) {
+    if ((cell_a.first | cell_b.first) != 7) return false;
+    const FaceInfo &a = cell_a.info, &b = cell_b.info;
+    if (!a.overlaps(b)) return false;
+    if (a.v[0] == kLarge || b.v[0] == kLarge) return true;
+    int shared = 0;
+    for (int i = 0; i < 4; ++i) {
+      const VertexIndex v = a.v[i];
+      const bool own = i == 0 || v != a.v[0];
+      shared += own && (v == b.v[0] || v == b.v[1] || v == b.v[2] || v == b.v[3]);
+    }
+    if (shared >= 2) return false;
+    const bool triangles = a.v[3] == a.v[0] && b.v[3] == b.v[0];
+    return !(shared == 1 && triangles);
   }
 
   // A triangle's fourth slot repeats its first vertex (a quad's holds its own fourth).
@@ -360,6 +499,11 @@ class Finder {
     Point3 p1, p2;
     Plane plane;
   };
+
+  template <typename Corner>
+  FanTriangle fan_triangle(const Corner& c) const {
+    return {c.face, c.i1, c.i2, solid_.vertices[c.i1], solid_.vertices[c.i2], solid_.planes[c.face]};
+  }
 
   void corner_crossing(const FanTriangle& a, const FanTriangle& b, Point3 V, Part& part) const {
     // Most neighbours round a vertex lie wholly to one side of each other's planes, farther than the

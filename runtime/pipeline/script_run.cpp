@@ -132,6 +132,12 @@ void print_stats(std::ostream& err, const PipelineResult& result) {
         f.stats.candidate_edges, f.stats.occluder_faces, f.stats.face_tests, f.stats.intersection_lines,
         f.evaluate_seconds * 1e3, f.render_seconds * 1e3);
     err << line;
+    const FrameStats::Stages& ms = f.stats.ms;
+    std::snprintf(line, sizeof line,
+                  "frame %d hidden-line stages: self-crossing search %.2f ms, setup %.2f ms, grid %.2f ms, "
+                  "examine %.2f ms, intersection lines and join %.2f ms\n",
+                  f.time.frame, ms.self_crossings, ms.setup, ms.grid, ms.examine, ms.finish);
+    err << line;
   }
   // Pen plans file by file, as the files were written.
   for (const std::filesystem::path& file : result.files)
