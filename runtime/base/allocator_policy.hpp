@@ -18,7 +18,8 @@ void keep_freed_memory();
 // 10⁶-triangle import rendered 3.5 → 2.2 s; peak memory up to a tenth more: bench/README.md). Returns
 // without effect when the setting is already there (the second start, or the user's own), under
 // AddressSanitizer (its own allocator), where the C library is not glibc, or when /proc/self/exe cannot
-// be executed.
+// be executed. `hlrscript` (runtime/cli/launcher.cpp) starts the engine with the setting already there,
+// so this only acts when the engine is run directly.
 void heap_on_huge_pages(char** argv);
 
 }  // namespace hlr::runtime
