@@ -290,7 +290,8 @@ void append(FrameSetup& setup, FrameSetup&& part) {
 
 }  // namespace
 
-FrameSetup prepare_frame(const Scene& scene, const Camera& camera, bool keep_culled, unsigned threads) {
+FrameSetup prepare_frame(const Scene& scene, const Camera& camera, bool keep_culled, unsigned threads,
+                         bool assume_uncrossed) {
   FrameSetup setup;
   setup.scene = &scene;
   const auto& m = camera.viewFromWorld.m;
@@ -334,7 +335,7 @@ FrameSetup prepare_frame(const Scene& scene, const Camera& camera, bool keep_cul
     // in a scan turns a patch inside out), and so may one folded flat onto itself (Solid::folded), so
     // their back faces stay occluders and their back lines candidates.
     cull[o] = solid.closed && !solid.folded && wholly_in_front(view_vertices, camera, ltol) &&
-              solid.self_crossings().empty();
+              (assume_uncrossed || solid.self_crossings().empty());
   };
   std::size_t faces = 0;
   for (const SceneObject& o : scene.objects) faces += o.solid->faces.size();

@@ -81,7 +81,10 @@ void set_picture_tolerance(Candidate& c, const Camera& camera, double length_tol
 // Culled candidates (hidden by the back-face rules alone) are kept only when `keep_culled` is set.
 // Objects are prepared in parallel as core/parallel.hpp's `threads` says (0: the caller's arena). The
 // candidates are the solids' edges; append_intersection_candidates() adds the lines where faces cross.
-FrameSetup prepare_frame(const Scene& scene, const Camera& camera, bool keep_culled, unsigned threads = 0);
+// `assume_uncrossed` culls a closed solid without asking whether it passes through itself (the search
+// may still be running); the caller must check that guess (FrameSetup::cull) once it has the answer.
+FrameSetup prepare_frame(const Scene& scene, const Camera& camera, bool keep_culled, unsigned threads = 0,
+                         bool assume_uncrossed = false);
 
 // Appends to the candidates of prepare_frame(scene, camera, keep_culled, …) the pieces of the lines where
 // faces cross (of two solids, or of one: Solid::self_crossings, searched for now if not yet known),
