@@ -7,7 +7,6 @@
 // decided by exact orientation predicates (corner_crossing).
 #include <algorithm>
 #include <cmath>
-#include <bit>
 #include <cstdint>
 #include <limits>
 #include <utility>
@@ -16,6 +15,7 @@
 #include "core/geometry/box3.hpp"
 #include "core/geometry/exact_crossing.hpp"
 #include "core/geometry/exact_predicates.hpp"
+#include "core/geometry/float_bounds.hpp"
 #include "core/parallel.hpp"
 #include "core/solid/face_crossing.hpp"
 #include "core/solid/solid.hpp"
@@ -55,19 +55,6 @@ void sort_by_cell(std::vector<std::uint64_t>& entries) {
   std::vector<std::uint32_t> counts;
   sort_by_cell(entries, buffer, counts);
 }
-
-// The float next to f towards −∞, for a finite f: one step of its bit pattern.
-float float_step_down(float f) {
-  if (f == 0) return -std::numeric_limits<float>::denorm_min();
-  const auto bits = std::bit_cast<std::uint32_t>(f);
-  return std::bit_cast<float>(f > 0 ? bits - 1 : bits + 1);
-}
-float float_below(double x) {  // the largest float ≤ x (finite x; beyond the floats' range, their max)
-  const auto f = static_cast<float>(x);
-  if (static_cast<double>(f) <= x) return f;
-  return std::isinf(f) ? std::numeric_limits<float>::max() : float_step_down(f);
-}
-float float_above(double x) { return -float_below(-x); }
 
 // Per face, what the pair tests read, in 40 bytes: its box grown by the coincidence tolerance and rounded
 // outward to floats (never smaller: what it lets through is decided in doubles after), and, for a face of
