@@ -21,6 +21,8 @@
 #include "core/camera/ortho_camera.hpp"
 #include "core/hlr/render_frame.hpp"
 #include "core/tolerance.hpp"
+#include "core/geometry/box3.hpp"
+#include "stdlib/mesh_import.hpp"
 
 namespace {
 
@@ -72,9 +74,20 @@ BenchScene make(const std::string& full_name) {
     b = hlr::bench::make_scene("torus", 10000);
   } else if (name == "prism") {
     b = hlr::bench::make_scene("prism", 2002);
+  } else if (name.ends_with(".off") || name.ends_with(".stl") || name.ends_with(".obj")) {
+    // A mesh file (the bunny, fandisk), imported as `hlrscript` does, seen from 2.2 diagonals away.
+    auto solid = std::make_shared<hlr::Solid>(hlr::stdlib::import_mesh(name).solid);
+    hlr::Box3 box;
+    for (hlr::Point3 p : solid->vertices) box.include(p);
+    const hlr::Point3 centre{0.5 * (box.lo.x + box.hi.x), 0.5 * (box.lo.y + box.hi.y), 0.5 * (box.lo.z + box.hi.z)};
+    b.faces = solid->faces.size();
+    b.scene.objects.push_back({std::filesystem::path(name).filename().string(), solid});
+    b.camera = hlr::bench::orbit_view(centre, 2.2 * hlr::distance(box.lo, box.hi), 30, 25, 40);
+    b.detail = "import(\"" + std::filesystem::path(name).filename().string() + "\")";
   } else {
     throw std::invalid_argument("unknown scene '" + full_name +
-                                "' (cube mesh10k mesh75k sphere torus prism, each optionally with -persp)");
+                                "' (cube mesh10k mesh75k sphere torus prism, or a mesh file FILE.off|.stl|.obj; each optionally "
+                                "with -persp)");
   }
   if (!persp) b.camera = parallel_view(b, b.camera);
   return b;
@@ -183,7 +196,8 @@ int main(int argc, char** argv) {
     std::fprintf(stderr,
                  "%s\nusage: peers_bench [--runs N] [--occt-budget S] [--occt-tol-angular RAD] "
                  "[--sketch-limit S] [--sketch-bsp] "
-                 "[--no-sketch] [SCENE[-persp]]... (SCENE: cube mesh10k mesh75k sphere torus prism)\n",
+                 "[--no-sketch] [SCENE[-persp]]... (SCENE: cube mesh10k mesh75k sphere torus prism, or a "
+                 "mesh file FILE.off|.stl|.obj)\n",
                  e.what());
     return 2;
   }
