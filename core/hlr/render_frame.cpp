@@ -46,6 +46,7 @@ struct Worker {
   const HlrOptions& options;
   Affine3 world_from_view;
   std::vector<std::uint32_t> stamp;
+  std::vector<std::uint32_t> near;  // the occluders met near the current edge
   OcclusionScratch scratch;
   IntervalSet hidden;
   std::vector<Interval> visible;  // the complement of `hidden`, room reused
@@ -83,12 +84,25 @@ struct Worker {
     Rect2 box = Rect2::none();
     box.include(c.pic0);
     box.include(c.pic1);
+    // In three passes, each fetching ahead what the next reads — the occluders near the edge, then the
+    // outlines of those that may hide it — so that their loads overlap: occluders come from all over
+    // memory (a scan's faces are in no order), and one at a time each test waited on two of them.
+    near.clear();
     grid->for_each_near(c.pic0, c.pic1, stamp, index + 1, [&](std::uint32_t id) {
-      const Occluder& o = setup.occluders[id];
-      if (o.min_depth >= max_depth || !o.bounds.overlaps(box) || is_own_face(c, o)) return;
-      ++face_tests;
-      add_hidden_intervals(setup, camera, c, o, scratch, hidden);
+      __builtin_prefetch(&setup.occluders[id]);
+      near.push_back(id);
     });
+    std::size_t kept = 0;
+    for (const std::uint32_t id : near) {
+      const Occluder& o = setup.occluders[id];
+      if (o.min_depth >= max_depth || !o.bounds.overlaps(box) || is_own_face(c, o)) continue;
+      __builtin_prefetch(&setup.polygon_points[o.first_point]);
+      __builtin_prefetch(&setup.ring_ends[o.first_ring]);
+      near[kept++] = id;
+    }
+    face_tests += kept;
+    for (std::size_t k = 0; k < kept; ++k)
+      add_hidden_intervals(setup, camera, c, setup.occluders[near[k]], scratch, hidden);
     // Hidden runs that meet up to rounding (across a shared face edge) are one run: the sliver between
     // them is not a visible piece.
     // A hidden run of negligible length (an edge grazing a face's outline) does not split what is seen.
@@ -241,6 +255,7 @@ FrameResult render_frame(const Scene& scene, const Camera& camera, const HlrOpti
                   options,
                   world_from_view,
                   std::vector<std::uint32_t>(setup.occluders.size(), 0),
+                  {},
                   {},
                   {},
                   {},
