@@ -19,9 +19,9 @@
 #include "bench/peers/occt_peer.hpp"
 #include "bench/peers/sketch_peer.hpp"
 #include "core/camera/ortho_camera.hpp"
+#include "core/geometry/box3.hpp"
 #include "core/hlr/render_frame.hpp"
 #include "core/tolerance.hpp"
-#include "core/geometry/box3.hpp"
 #include "stdlib/mesh_import.hpp"
 
 namespace {
@@ -79,15 +79,17 @@ BenchScene make(const std::string& full_name) {
     auto solid = std::make_shared<hlr::Solid>(hlr::stdlib::import_mesh(name).solid);
     hlr::Box3 box;
     for (hlr::Point3 p : solid->vertices) box.include(p);
-    const hlr::Point3 centre{0.5 * (box.lo.x + box.hi.x), 0.5 * (box.lo.y + box.hi.y), 0.5 * (box.lo.z + box.hi.z)};
+    const hlr::Point3 centre{0.5 * (box.lo.x + box.hi.x), 0.5 * (box.lo.y + box.hi.y),
+                             0.5 * (box.lo.z + box.hi.z)};
     b.faces = solid->faces.size();
     b.scene.objects.push_back({std::filesystem::path(name).filename().string(), solid});
     b.camera = hlr::bench::orbit_view(centre, 2.2 * hlr::distance(box.lo, box.hi), 30, 25, 40);
     b.detail = "import(\"" + std::filesystem::path(name).filename().string() + "\")";
   } else {
-    throw std::invalid_argument("unknown scene '" + full_name +
-                                "' (cube mesh10k mesh75k sphere torus prism, or a mesh file FILE.off|.stl|.obj; each optionally "
-                                "with -persp)");
+    throw std::invalid_argument(
+        "unknown scene '" + full_name +
+        "' (cube mesh10k mesh75k sphere torus prism, or a mesh file FILE.off|.stl|.obj; each optionally "
+        "with -persp)");
   }
   if (!persp) b.camera = parallel_view(b, b.camera);
   return b;

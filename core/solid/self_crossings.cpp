@@ -8,7 +8,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <limits>
 #include <utility>
 #include <vector>
 
@@ -256,7 +255,9 @@ class Finder {
     auto index = [&](double v, double origin) {
       return static_cast<std::uint16_t>(std::clamp(std::floor((v - origin) / cell), 0.0, 1023.0));
     };
-    auto cell_key = [](std::uint64_t x, std::uint64_t y, std::uint64_t z) { return x | (y << 10) | (z << 20); };
+    auto cell_key = [](std::uint64_t x, std::uint64_t y, std::uint64_t z) {
+      return x | (y << 10) | (z << 20);
+    };
     // The faces ranked by the cell their box begins in (z first): a slab's faces are then a run of ranks,
     // and a cell's lie near each other in cell_faces, where in a scan's own order they were spread over
     // the whole mesh and every one fetched from memory.
@@ -347,7 +348,8 @@ class Finder {
           local.clear();
           for (std::size_t p = i; p < end; ++p) {
             const std::size_t rank = face_of(entries[p]);
-            local.push_back({cell_faces[rank], face_at[rank], static_cast<std::uint32_t>(entries[p] >> kFirstShift) & 7});
+            local.push_back(
+                {cell_faces[rank], face_at[rank], static_cast<std::uint32_t>(entries[p] >> kFirstShift) & 7});
           }
           for (std::size_t p = 0; p < local.size(); ++p)
             for (std::size_t q = p + 1; q < local.size(); ++q)
@@ -373,9 +375,9 @@ class Finder {
   // median (the sides of a many-sided prism, as tall as the cells are wide) crowd into a few cells.
   static constexpr std::size_t kSweepAbove = 32;
 
-  // Calls visit(a, b) (two of the cell's entries, faces for ranks) for the pairs of the cell's faces whose boxes overlap
-  // along the axis where they overlap least: sorted by the box's low end on it, each face meets the
-  // faces starting before its box ends.
+  // Calls visit(a, b) (two of the cell's entries, faces for ranks) for the pairs of the cell's faces whose
+  // boxes overlap along the axis where they overlap least: sorted by the box's low end on it, each face meets
+  // the faces starting before its box ends.
   template <typename Visit>
   void sweep_cell(std::vector<std::uint64_t>& cell, Visit&& visit) const {
     int axis = 0;
@@ -410,13 +412,8 @@ class Finder {
     if ((cell_a.first | cell_b.first) != 7) return false;
     const FaceInfo &a = cell_a.info, &b = cell_b.info;
     if (!a.overlaps(b)) return false;
-    if (a.v[0] == kLarge || b.v[0] == kLarge) return true;
-    int shared = 0;
-    for (int i = 0; i < 4; ++i) {
-      const VertexIndex v = a.v[i];
-      const bool own = i == 0 || v != a.v[0];
-      shared += own && (v == b.v[0] || v == b.v[1] || v == b.v[2] || v == b.v[3]);
-    }
+    if (!a.small() || !b.small()) return true;
+    const int shared = shared_among_four(a, b);
     if (shared >= 2) return false;
     const bool triangles = a.v[3] == a.v[0] && b.v[3] == b.v[0];
     return !(shared == 1 && triangles);
@@ -425,18 +422,21 @@ class Finder {
   // A triangle's fourth slot repeats its first vertex (a quad's holds its own fourth).
   bool is_triangle(FaceIndex f) const { return info_[f].small() && info_[f].v[3] == info_[f].v[0]; }
 
+  // How many vertices two faces of up to four share, counting to two. Most pairs met are neighbours: the
+  // padded four against four, without branches.
+  static int shared_among_four(const FaceInfo& a, const FaceInfo& b) {
+    int count = 0;
+    for (int i = 0; i < 4; ++i) {
+      const VertexIndex v = a.v[i];
+      const bool own = i == 0 || v != a.v[0];  // padding repeats the first vertex
+      count += own && (v == b.v[0] || v == b.v[1] || v == b.v[2] || v == b.v[3]);
+    }
+    return std::min(count, 2);
+  }
+
   // How many vertices faces a and b share, counting to two (an edge).
   int shared_vertices(const FaceInfo& ia, const FaceInfo& ib) const {
-    // Most pairs met are neighbours: the padded four against four, without branches.
-    if (ia.small() && ib.small()) {
-      int count = 0;
-      for (int i = 0; i < 4; ++i) {
-        const VertexIndex v = ia.v[i];
-        const bool own = i == 0 || v != ia.v[0];  // padding repeats the first vertex
-        count += own && (v == ib.v[0] || v == ib.v[1] || v == ib.v[2] || v == ib.v[3]);
-      }
-      return std::min(count, 2);
-    }
+    if (ia.small() && ib.small()) return shared_among_four(ia, ib);
     int count = 0;
     if (ia.small() || ib.small()) {  // a small face against a large one: look its few vertices up
       const FaceInfo& small = ia.small() ? ia : ib;

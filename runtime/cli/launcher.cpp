@@ -48,8 +48,9 @@ int main(int argc, char** argv) {
   char self[PATH_MAX];
   const ssize_t n = ::readlink("/proc/self/exe", self, sizeof self - 1);
   if (n <= 0) {
-    std::fprintf(stderr, "hlrscript: cannot tell where this program is (/proc/self/exe: %s); run "
-                         "hlrscript-engine from its libexec folder instead\n",
+    std::fprintf(stderr,
+                 "hlrscript: cannot tell where this program is (/proc/self/exe: %s); run "
+                 "hlrscript-engine from its libexec folder instead\n",
                  std::strerror(errno));
     return 127;
   }
@@ -57,9 +58,11 @@ int main(int argc, char** argv) {
   char* slash = std::strrchr(self, '/');
   if (slash != nullptr) slash[1] = '\0';
   char engine[PATH_MAX];
-  if (!engine_at(engine, self, "../libexec/hlrscript-engine") && !engine_at(engine, self, "hlrscript-engine")) {
-    std::fprintf(stderr, "hlrscript: the engine is missing: neither %s../libexec/hlrscript-engine nor "
-                         "%shlrscript-engine can be run; reinstall hlrscript\n",
+  if (!engine_at(engine, self, "../libexec/hlrscript-engine") &&
+      !engine_at(engine, self, "hlrscript-engine")) {
+    std::fprintf(stderr,
+                 "hlrscript: the engine is missing: neither %s../libexec/hlrscript-engine nor "
+                 "%shlrscript-engine can be run; reinstall hlrscript\n",
                  self, self);
     return 127;
   }
