@@ -171,14 +171,15 @@ namespace {
 // Whether the two triangles on edge e lie in one plane exactly (their far corners coplanar with it) and
 // on the same side of it: one folded back over the other.
 bool folded_flat(const Solid& solid, const SolidEdge& e) {
+  // Opposite normals first (the planes are at hand, the rings behind two more pointers): faces folded
+  // flat face opposite ways.
+  if (dot(solid.planes[static_cast<std::size_t>(e.left)].normal,
+          solid.planes[static_cast<std::size_t>(e.right)].normal) >= 0)
+    return false;
   const auto& left = solid.faces[static_cast<std::size_t>(e.left)];
   const auto& right = solid.faces[static_cast<std::size_t>(e.right)];
   if (left.rings.size() != 1 || right.rings.size() != 1 || left.rings[0].vertices.size() != 3 ||
       right.rings[0].vertices.size() != 3)
-    return false;
-  // Opposite normals first (cheap): faces folded flat face opposite ways.
-  if (dot(solid.planes[static_cast<std::size_t>(e.left)].normal,
-          solid.planes[static_cast<std::size_t>(e.right)].normal) >= 0)
     return false;
   auto far_corner = [&](const Face& f) {
     for (VertexIndex v : f.rings[0].vertices)
@@ -327,9 +328,18 @@ SolidBuildResult SolidBuilder::build() const {
   build_edge_table(solid, edges, valid, sizes, lines_, vertices, options, diagnostics);
   solid.vertices = vertices.input_of.empty() ? positions_ : std::move(vertices.kept);
   // Triangles folded flat onto each other: in one plane exactly, on the same side of their edge.
-  solid.folded = std::any_of(solid.edges.begin(), solid.edges.end(), [&](const SolidEdge& e) {
-    return e.left != kNoFace && e.right != kNoFace && e.left != e.right && folded_flat(solid, e);
+  constexpr std::size_t kChunkEdges = 16384;
+  const std::size_t edge_count = solid.edges.size();
+  std::vector<char> folded((edge_count + kChunkEdges - 1) / kChunkEdges, 0);
+  parallel_chunks(folded.size(), threads_for(edge_count, 2 * kChunkEdges, 0), [&](std::size_t k) {
+    const auto from = solid.edges.begin() + static_cast<std::ptrdiff_t>(k * kChunkEdges);
+    const auto to =
+        solid.edges.begin() + static_cast<std::ptrdiff_t>(std::min(edge_count, (k + 1) * kChunkEdges));
+    folded[k] = std::any_of(from, to, [&](const SolidEdge& e) {
+      return e.left != kNoFace && e.right != kNoFace && e.left != e.right && folded_flat(solid, e);
+    });
   });
+  solid.folded = std::any_of(folded.begin(), folded.end(), [](char f) { return f != 0; });
 
   if (!diagnostics.has_errors()) result.solid = std::move(solid);
   return result;
