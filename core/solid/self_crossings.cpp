@@ -5,6 +5,8 @@
 // share an edge meet along it and nowhere else; faces that share one vertex may still pass through each
 // other from that vertex on (a fold through a fan, two sheets welded at a point), which for triangles is
 // decided by exact orientation predicates (corner_crossing).
+#include <tbb/enumerable_thread_specific.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -125,10 +127,6 @@ class Finder {
 
   // What one thread finds, with its own buffers.
   struct Part {
-    std::vector<std::uint64_t> entries, sort_buffer;  // a slab's, and room to sort them
-    std::vector<std::uint32_t> sort_counts;
-    std::vector<CellFace> local;      // a cell's faces
-    std::vector<std::uint64_t> cell;  // a crowded cell's entries, for the sweep
     FaceCrossingScratch scratch;
     std::vector<CrossingPiece> pieces;
     std::vector<SelfCrossing> found;
@@ -307,15 +305,24 @@ class Finder {
     }
     slab_ranks.push_back(n);
     std::vector<Part> parts(slab_ranks.size() - 1);
+    // A slab's lists, per thread: room reused from slab to slab (fresh pages are dear).
+    struct SlabRoom {
+      std::vector<std::uint64_t> entries, sort_buffer;  // the slab's, and room to sort them
+      std::vector<std::uint32_t> sort_counts;
+      std::vector<CellFace> local;      // a cell's faces
+      std::vector<std::uint64_t> cell;  // a crowded cell's entries, for the sweep
+    };
+    tbb::enumerable_thread_specific<SlabRoom> rooms;
     parallel_chunks(parts.size(), threads_for(n, 8192, 0), [&](std::size_t k) {
       Part& part = parts[k];
+      SlabRoom& room = rooms.local();
       const int z0 = cells[slab_ranks[k]].lo[2];
       const int z1 = slab_ranks[k + 1] < n ? cells[slab_ranks[k + 1]].lo[2] : 1024;  // planes [z0, z1)
       // Faces beginning up to `reach` planes below the slab may reach into it.
       std::size_t from = slab_ranks[k];
       while (from > 0 && cells[from - 1].lo[2] + reach >= z0) --from;
       // One entry per (cell, face rank), packed as above, so a sort groups each cell's faces in rank order.
-      std::vector<std::uint64_t>& entries = part.entries;
+      std::vector<std::uint64_t>& entries = room.entries;
       entries.clear();
       for (std::size_t r = from; r < slab_ranks[k + 1]; ++r) {
         const Cells& c = cells[r];
@@ -329,19 +336,19 @@ class Finder {
               entries.push_back(cell_key(x, y, z) << kCellShift | first << kFirstShift | r);
             }
       }
-      sort_by_cell(entries, part.sort_buffer, part.sort_counts);
-      std::vector<CellFace>& local = part.local;
+      sort_by_cell(entries, room.sort_buffer, room.sort_counts);
+      std::vector<CellFace>& local = room.local;
       for (std::size_t i = 0; i < entries.size();) {
         const std::uint64_t at = cell_of(entries[i]);
         std::size_t end = i + 1;
         while (end < entries.size() && cell_of(entries[end]) == at) ++end;
         if (end - i > kSweepAbove) {
           // A pair sharing several cells is examined in one of them only.
-          part.cell.assign(entries.begin() + static_cast<std::ptrdiff_t>(i),
+          room.cell.assign(entries.begin() + static_cast<std::ptrdiff_t>(i),
                            entries.begin() + static_cast<std::ptrdiff_t>(end));
-          for (std::uint64_t& e : part.cell)  // ranks to faces
+          for (std::uint64_t& e : room.cell)  // ranks to faces
             e = (e & ~kFaceMask) | static_cast<std::uint64_t>(face_at[face_of(e)]);
-          sweep_cell(part.cell, [&](std::uint64_t a, std::uint64_t b) {
+          sweep_cell(room.cell, [&](std::uint64_t a, std::uint64_t b) {
             if (pair_is_met_here(a, b)) pair(face_of(a), face_of(b), part);
           });
         } else {
