@@ -30,9 +30,9 @@ struct FrameStats {
   std::size_t intersection_lines = 0;  // pieces of intersection lines (between solids and within one)
   std::size_t visible_segments = 0;
   // Wall time of the stages, in ms (for --stats; nothing depends on them). The self-crossing search is
-  // what the frame waited for it: it runs once per solid, beside the edges' examination.
+  // what the frame waited for it: it runs once per solid, mostly beside the edges' examination.
   struct Stages {
-    double self_crossings = 0;  // closed solids' search, and the wait for open ones' at the end
+    double self_crossings = 0;  // the search run first (one thread, large scenes) and the wait at the end
     double setup = 0;           // projection, culling, candidates and occluders
     double grid = 0;            // the picture grid of occluders
     double examine = 0;         // every candidate against the occluders near it

@@ -177,10 +177,6 @@ class Finder {
       if (is_triangle(static_cast<FaceIndex>(f)))
         for (int k = 0; k < 3; ++k) ++first[info_[f].v[k] + 1];
     for (std::size_t v = 0; v < nv; ++v) first[v + 1] += first[v];
-    struct Corner {
-      FaceIndex face;
-      VertexIndex i1, i2;  // the triangle's other vertices, in ring order after the corner's
-    };
     std::vector<Corner> corners(first[nv]);
     {
       std::vector<std::uint32_t> fill(first.begin(), first.end() - 1);
@@ -485,6 +481,12 @@ class Finder {
     return above != below;
   }
 
+  // A triangle at one of its corners: the other two vertices, in ring order after the corner's.
+  struct Corner {
+    FaceIndex face;
+    VertexIndex i1, i2;
+  };
+
   // One triangle of a vertex's fan, read once for all its pairs: its plane and its other two vertices
   // (ring order after the fan's vertex).
   struct FanTriangle {
@@ -494,7 +496,6 @@ class Finder {
     Plane plane;
   };
 
-  template <typename Corner>
   FanTriangle fan_triangle(const Corner& c) const {
     return {c.face, c.i1, c.i2, solid_.vertices[c.i1], solid_.vertices[c.i2], solid_.planes[c.face]};
   }

@@ -41,8 +41,7 @@ bool engine_at(char (&path)[PATH_MAX], const char* folder, const char* name) {
 
 }  // namespace
 
-int main(int argc, char** argv) {
-  (void)argc;
+int main(int, char** argv) {
   // The engine lies beside this program's folder (an installed tree: bin/ and libexec/, which may have
   // been moved together) or in it (the build folder).
   char self[PATH_MAX];
