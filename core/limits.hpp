@@ -8,6 +8,9 @@ namespace hlr {
 // ---- Pens
 // Pen numbers run 1…kMaxPen: one byte, far more than any carousel or colour table.
 inline constexpr int kMaxPen = 255;
+// Occlusion levels drawn run 1…kMaxOcclusionLevel: past a few surfaces a plotter drawing is a thicket, and
+// each level is a layer (and on plotters a pen) of its own.
+inline constexpr int kMaxOcclusionLevel = 16;
 // The widest pen line: beyond a centimetre a stroke is no longer a line.
 inline constexpr double kMaxPenWidthMm = 10;
 

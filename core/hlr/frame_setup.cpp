@@ -291,7 +291,7 @@ void append(FrameSetup& setup, FrameSetup&& part) {
 }  // namespace
 
 FrameSetup prepare_frame(const Scene& scene, const Camera& camera, bool keep_culled, unsigned threads,
-                         bool assume_uncrossed) {
+                         bool assume_uncrossed, bool cull_back_faces) {
   FrameSetup setup;
   setup.scene = &scene;
   const auto& m = camera.viewFromWorld.m;
@@ -334,7 +334,8 @@ FrameSetup prepare_frame(const Scene& scene, const Camera& camera, bool keep_cul
     // while the surface never winds negatively round a point. A solid passing through itself may (a fold
     // in a scan turns a patch inside out), and so may one folded flat onto itself (Solid::folded), so
     // their back faces stay occluders and their back lines candidates.
-    cull[o] = solid.closed && !solid.folded && wholly_in_front(view_vertices, camera, ltol) &&
+    cull[o] = cull_back_faces && solid.closed && !solid.folded &&
+              wholly_in_front(view_vertices, camera, ltol) &&
               (assume_uncrossed || solid.self_crossings().empty());
   };
   std::size_t faces = 0;

@@ -83,8 +83,10 @@ void set_picture_tolerance(Candidate& c, const Camera& camera, double length_tol
 // candidates are the solids' edges; append_intersection_candidates() adds the lines where faces cross.
 // `assume_uncrossed` culls a closed solid without asking whether it passes through itself (the search
 // may still be running); the caller must check that guess (FrameSetup::cull) once it has the answer.
+// Without `cull_back_faces` every face is an occluder and every drawn edge a candidate (occlusion levels
+// count the back faces too).
 FrameSetup prepare_frame(const Scene& scene, const Camera& camera, bool keep_culled, unsigned threads = 0,
-                         bool assume_uncrossed = false);
+                         bool assume_uncrossed = false, bool cull_back_faces = true);
 
 // Appends to the candidates of prepare_frame(scene, camera, keep_culled, …) the pieces of the lines where
 // faces cross (of two solids, or of one: Solid::self_crossings, searched for now if not yet known),

@@ -14,6 +14,8 @@ class IntervalSet {
  public:
   void clear() { items_.clear(); }
   bool empty() const { return items_.empty(); }
+  // The intervals as added (until a call that normalises): overlaps kept, for counting them.
+  const std::vector<Interval>& items() const { return items_; }
   void add(double lo, double hi) {
     if (hi <= lo) return;
     items_.push_back({std::max(lo, 0.0), std::min(hi, 1.0)});

@@ -12,6 +12,7 @@
 #include "core/hlr/face_grid.hpp"
 #include "core/hlr/frame_setup.hpp"
 #include "core/hlr/occlusion.hpp"
+#include "core/hlr/occlusion_levels.hpp"
 #include "core/parallel.hpp"
 
 namespace hlr {
@@ -52,12 +53,15 @@ struct Worker {
   std::vector<Interval> visible;  // the complement of `hidden`, room reused
   std::size_t face_tests = 0;
   std::vector<VisibleSegment> buffer;  // the current chunk's pieces
+  std::vector<Interval> covers;        // occlusion levels: the hidden intervals as added, one or more a face
+  LevelScratch level_scratch;
+  std::vector<LevelPiece> levels;
 
   Point2 picture_point(const Candidate& c, double t) const {
     return lerp(c.pic0, c.pic1, picture_param(c, camera, t));
   }
 
-  void emit(const Candidate& c, double t0, double t1, bool is_hidden, std::vector<VisibleSegment>& out) {
+  void emit(const Candidate& c, double t0, double t1, std::uint16_t level, std::vector<VisibleSegment>& out) {
     const double s0 = picture_param(c, camera, t0), s1 = picture_param(c, camera, t1);
     VisibleSegment seg;
     seg.p0 = world_from_view.apply(lerp(c.view0, c.view1, t0));
@@ -69,14 +73,15 @@ struct Worker {
     seg.edge = c.edge;
     seg.other = c.other;
     seg.source = c.source;
-    seg.hidden = is_hidden;
+    seg.hidden = level > 0;
+    seg.level = level;
     out.push_back(seg);
   }
 
   void process(std::uint32_t index, std::vector<VisibleSegment>& out) {
     const Candidate& c = setup.candidates[index];
     if (c.culled) {
-      if (options.include_hidden) emit(c, 0, 1, true, out);
+      if (options.include_hidden) emit(c, 0, 1, 1, out);
       return;
     }
     hidden.clear();
@@ -109,12 +114,19 @@ struct Worker {
     auto negligible = [&](double t0, double t1) {
       return distance(picture_point(c, t0), picture_point(c, t1)) <= c.picture_tolerance;
     };
+    if (options.max_level > 0) covers.assign(hidden.items().begin(), hidden.items().end());
     hidden.close_gaps(negligible);
     hidden.drop(negligible);
     hidden.complement_into(visible);
-    for (const Interval& v : visible) emit(c, v.lo, v.hi, false, out);
-    if (options.include_hidden)
-      for (const Interval& h : hidden.normalize()) emit(c, h.lo, h.hi, true, out);
+    for (const Interval& v : visible) emit(c, v.lo, v.hi, 0, out);
+    if (options.max_level > 0) {
+      levels.clear();
+      split_by_level(covers, hidden.normalize(), negligible, level_scratch, levels);
+      for (const LevelPiece& p : levels)
+        if (p.level <= options.max_level) emit(c, p.lo, p.hi, p.level, out);
+    } else if (options.include_hidden) {
+      for (const Interval& h : hidden.normalize()) emit(c, h.lo, h.hi, 1, out);
+    }
   }
 };
 
@@ -209,6 +221,8 @@ FrameResult render_frame(const Scene& scene, const Camera& camera, const HlrOpti
       }
     }
   } search{crossing_search, options.intersection_lines && options.threads == 0};
+  // Occlusion levels count every surface, back faces too: nothing is culled, so no guess is made.
+  const bool cull_back_faces = options.max_level == 0;
   // A closed solid's back faces may be culled only when it does not pass through itself (frame_setup.cpp).
   // Its search too runs beside the edges' preparation and examination, which take the answer to be "it
   // does not" (scenes and scans almost never do); once it is done the guess is checked, and where it was
@@ -219,12 +233,13 @@ FrameResult render_frame(const Scene& scene, const Camera& camera, const HlrOpti
   constexpr std::size_t kOverlapFaces = 250'000;
   std::size_t faces = 0;
   for (const SceneObject& o : scene.objects) faces += o.solid->faces.size();
-  const bool guess = search.armed && faces <= kOverlapFaces;
-  if (guess) {
+  const bool overlap = search.armed && faces <= kOverlapFaces;
+  const bool guess = overlap && cull_back_faces;
+  if (overlap) {
     crossing_search.run([&scene] {
       for (const SceneObject& o : scene.objects) o.solid->self_crossings();
     });
-  } else {
+  } else if (cull_back_faces) {
     for (const SceneObject& o : scene.objects)
       if (o.solid->closed) o.solid->self_crossings();
   }
@@ -235,7 +250,8 @@ FrameResult render_frame(const Scene& scene, const Camera& camera, const HlrOpti
   std::size_t edges = 0;
   std::unique_ptr<const FaceGrid> grid;
   auto prepare = [&](bool assume_uncrossed) {
-    setup = prepare_frame(scene, camera, options.include_hidden, options.threads, assume_uncrossed);
+    setup = prepare_frame(scene, camera, options.include_hidden, options.threads, assume_uncrossed,
+                          cull_back_faces);
     check_cancel();
     ms.setup += lap();
     // Only what lies inside the picture frame is examined.
@@ -260,6 +276,9 @@ FrameResult render_frame(const Scene& scene, const Camera& camera, const HlrOpti
                   {},
                   {},
                   0,
+                  {},
+                  {},
+                  {},
                   {}};
   });
   // Candidates [begin, end) are examined in the order of the grid cell their midpoint lies in (a counting

@@ -16,7 +16,12 @@
 namespace hlr {
 
 struct HlrOptions {
-  bool include_hidden = false;     // also return hidden pieces (hidden = true), for a dashed layer
+  bool include_hidden = false;  // also return hidden pieces (hidden = true), for a dashed layer
+  // Occlusion levels: when > 0, every point is given the number of surfaces in front of it (every face
+  // that separates it from the eye, back faces included, so nothing is culled) and the hidden pieces of
+  // levels 1 … max_level are returned (VisibleSegment::level), whatever include_hidden says. The visible
+  // pieces are those of max_level 0.
+  unsigned max_level = 0;
   bool intersection_lines = true;  // draw where faces cross (of two solids, or of one solid)
   // A visible piece that earlier pieces on the same line already draw (solids sharing an edge line) is
   // left out (core/hlr/coincident_pieces.hpp).

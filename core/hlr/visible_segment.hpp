@@ -21,6 +21,9 @@ struct VisibleSegment {
   std::uint32_t other = 0;  // second object (Intersection source)
   SegmentSource source = SegmentSource::Edge;
   bool hidden = false;
+  // Hidden pieces: how many surfaces lie between the eye and the piece when the frame counted them
+  // (HlrOptions::max_level > 0; every face counts, back faces too), else 1. Visible pieces: 0.
+  std::uint16_t level = 0;
 };
 
 struct FrameStats {

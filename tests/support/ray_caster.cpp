@@ -11,9 +11,12 @@ namespace hlr::test {
 
 const char* to_string(Visibility v) {
   switch (v) {
-    case Visibility::Visible: return "Visible";
-    case Visibility::Hidden: return "Hidden";
-    case Visibility::Ambiguous: return "Ambiguous";
+    case Visibility::Visible:
+      return "Visible";
+    case Visibility::Hidden:
+      return "Hidden";
+    case Visibility::Ambiguous:
+      return "Ambiguous";
   }
   return "?";
 }
@@ -28,7 +31,8 @@ double point_segment_distance(Point2 p, Point2 a, Point2 b) {
 double segment_distance(Point2 a, Point2 b, Point2 c, Point2 d) {
   const double o1 = cross(b - a, c - a), o2 = cross(b - a, d - a);
   const double o3 = cross(d - c, a - c), o4 = cross(d - c, b - c);
-  const bool proper = ((o1 > 0 && o2 < 0) || (o1 < 0 && o2 > 0)) && ((o3 > 0 && o4 < 0) || (o3 < 0 && o4 > 0));
+  const bool proper =
+      ((o1 > 0 && o2 < 0) || (o1 < 0 && o2 > 0)) && ((o3 > 0 && o4 < 0) || (o3 < 0 && o4 > 0));
   if (proper) return 0;
   // Touching and collinear cases come out as a zero point distance below.
   return std::min({point_segment_distance(a, c, d), point_segment_distance(b, c, d),
@@ -140,8 +144,8 @@ RayCaster::FaceProximity RayCaster::proximity(std::uint32_t object, std::uint32_
 
 // One face against the sight segment eye→p. `near_l` is the distance along the ray where the near plane
 // lies (occluders before it are clipped away) and `near_band` its tolerance band, both in world units.
-RayCaster::Hit RayCaster::test_face(const FaceRecord& f, Point3 eye, Point3 p, double near_l, double near_band,
-                                    std::string* why) const {
+RayCaster::Hit RayCaster::test_face(const FaceRecord& f, Point3 eye, Point3 p, double near_l,
+                                    double near_band, std::string* why) const {
   const double sp = dot(f.n, to_vector(p)) + f.d;
   if (std::abs(sp) <= on_plane_) return Hit::None;  // p on this plane: a line crosses a plane only once
   const double se = dot(f.n, to_vector(eye)) + f.d;
@@ -198,10 +202,8 @@ RayCaster::Hit RayCaster::test_face(const FaceRecord& f, Point3 eye, Point3 p, d
   return Hit::Ambiguous;
 }
 
-Verdict RayCaster::classify(Point3 p) const {
-  Verdict verdict;
-  Point3 eye;
-  double near_l = 0, near_band = 0;
+std::optional<RayCaster::SightLine> RayCaster::sight_line(Point3 p, Verdict& verdict) const {
+  SightLine line;
   if (camera_.projection == Projection::Perspective) {
     // World distance from p to the near plane is (depth − near)/|∇depth|.
     const double g = length(camera_.viewFromWorld.row(2));
@@ -209,26 +211,33 @@ Verdict RayCaster::classify(Point3 p) const {
     if (depth < camera_.near_depth - tol_ * g) {
       verdict.visibility = Visibility::Hidden;
       verdict.reason = "in front of the near plane (depth " + std::to_string(depth) + ")";
-      return verdict;
+      return std::nullopt;
     }
     if (depth <= camera_.near_depth + tol_ * g) {
       verdict.visibility = Visibility::Ambiguous;
       verdict.reason = "within tol of the near plane";
-      return verdict;
+      return std::nullopt;
     }
-    eye = camera_.eye_world();
-    const double len = distance(eye, p);
-    near_l = len * camera_.near_depth / depth;
-    near_band = tol_ * g * len / depth;
+    line.eye = camera_.eye_world();
+    const double len = distance(line.eye, p);
+    line.near_l = len * camera_.near_depth / depth;
+    line.near_band = tol_ * g * len / depth;
   } else {
     // Orthographic: start far enough out along −direction that every face lies ahead of the start.
     const double far = 4 * (extent_ + distance(p, center_));
-    eye = p - far * camera_.direction_world();
+    line.eye = p - far * camera_.direction_world();
   }
+  return line;
+}
+
+Verdict RayCaster::classify(Point3 p) const {
+  Verdict verdict;
+  const std::optional<SightLine> line = sight_line(p, verdict);
+  if (!line) return verdict;
   bool ambiguous = false;
   for (const FaceRecord& f : faces_) {
     std::string why;
-    const Hit h = test_face(f, eye, p, near_l, near_band, &why);
+    const Hit h = test_face(f, line->eye, p, line->near_l, line->near_band, &why);
     if (h == Hit::Hidden) {
       verdict.visibility = Visibility::Hidden;
       verdict.object = static_cast<int>(f.object);
@@ -245,6 +254,19 @@ Verdict RayCaster::classify(Point3 p) const {
   }
   verdict.visibility = ambiguous ? Visibility::Ambiguous : Visibility::Visible;
   return verdict;
+}
+
+std::optional<int> RayCaster::surfaces_in_front(Point3 p) const {
+  Verdict verdict;
+  const std::optional<SightLine> line = sight_line(p, verdict);
+  if (!line) return std::nullopt;  // at or before the near plane: no count to give
+  int count = 0;
+  for (const FaceRecord& f : faces_) {
+    const Hit h = test_face(f, line->eye, p, line->near_l, line->near_band, nullptr);
+    if (h == Hit::Ambiguous) return std::nullopt;
+    count += h == Hit::Hidden;
+  }
+  return count;
 }
 
 }  // namespace hlr::test

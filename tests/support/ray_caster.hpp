@@ -43,6 +43,9 @@ class RayCaster {
 
   Visibility visibility(Point3 p) const { return classify(p).visibility; }
   Verdict classify(Point3 p) const;
+  // How many faces hide p (occlusion level: every face the sight line crosses before p, back faces too);
+  // nullopt when any face is Ambiguous for p, or p is not beyond the near plane.
+  std::optional<int> surfaces_in_front(Point3 p) const;
 
   double tolerance() const { return tol_; }  // world units
   double extent() const { return extent_; }  // scene bounding-box diagonal (eye included)
@@ -67,12 +70,19 @@ class RayCaster {
     Vector3 n{};   // unit normal (Newell), outward
     double d = 0;  // plane n·p + d = 0
     Point3 origin{};
-    Vector3 u{}, v{};                         // orthonormal basis of the plane
-    std::vector<std::vector<Point2>> rings;   // rings in (u, v) coordinates
-    Point3 lo{}, hi{};                        // bounding box inflated by tol
+    Vector3 u{}, v{};                        // orthonormal basis of the plane
+    std::vector<std::vector<Point2>> rings;  // rings in (u, v) coordinates
+    Point3 lo{}, hi{};                       // bounding box inflated by tol
   };
   enum class Hit { None, Hidden, Ambiguous };
-  Hit test_face(const FaceRecord& f, Point3 eye, Point3 p, double near_l, double near_band, std::string* why) const;
+  struct SightLine {
+    Point3 eye{};  // where the sight line to p starts (orthographic: far out along −direction)
+    double near_l = 0, near_band = 0;
+  };
+  // The sight line to p; nullopt (and `verdict` set) when p is at or before the near plane.
+  std::optional<SightLine> sight_line(Point3 p, Verdict& verdict) const;
+  Hit test_face(const FaceRecord& f, Point3 eye, Point3 p, double near_l, double near_band,
+                std::string* why) const;
   const FaceRecord& record(std::uint32_t object, std::uint32_t face) const;
 
   Camera camera_;

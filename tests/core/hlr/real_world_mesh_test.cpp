@@ -14,6 +14,7 @@
 #include "core/hlr/render_frame.hpp"
 #include "stdlib/generators.hpp"
 #include "tests/support/mesh_views.hpp"
+#include "tests/support/occlusion_level_checks.hpp"
 #include "tests/support/ray_caster_checks.hpp"
 #include "tests/support/seeded_rng.hpp"
 
@@ -136,6 +137,31 @@ TEST(RealWorldMesh, TwoHundredViewsOfTenMeshes) {
   EXPECT_GT(visible, 50000u) << "the views should see much of the meshes";
   // The oracle leaves undecided only what lies within its tolerance of a degeneracy: a small share.
   EXPECT_LT(static_cast<double>(ambiguous), 0.01 * static_cast<double>(drawn + visible));
+}
+
+// Occlusion levels (tracker issue 36) on the same meshes, four views each: every piece's level is the
+// oracle's count of the surfaces in front of it, and every hidden point of a drawn edge lies on a piece of
+// its level.
+TEST(RealWorldMesh, OcclusionLevelsOfTenMeshes) {
+  constexpr unsigned kMaxLevel = 6;
+  std::size_t hidden = 0, deep = 0;
+  unsigned seed = 4400;
+  for (const Named& m : meshes()) {
+    Rng r(seed++);
+    for (int n = 0; n < 4; ++n) {
+      const Camera camera = random_view(r, m.center, m.size, n);
+      HlrOptions options;
+      options.max_level = kMaxLevel;
+      const FrameResult result = render_frame(m.scene, camera, options);
+      const LevelReport report =
+          check_occlusion_levels(m.scene, RayCaster(m.scene, camera), result, kMaxLevel);
+      EXPECT_TRUE(report.ok()) << m.name << ", view " << n << ":\n" << report.summary();
+      for (std::size_t k = 1; k <= kMaxLevel; ++k) hidden += report.samples_per_level[k];
+      for (std::size_t k = 3; k <= kMaxLevel; ++k) deep += report.samples_per_level[k];
+    }
+  }
+  EXPECT_GT(hidden, 50000u) << "the views should see behind much of the meshes";
+  EXPECT_GT(deep, 3000u) << "and behind three surfaces or more in places";
 }
 
 }  // namespace
