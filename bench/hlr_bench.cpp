@@ -38,10 +38,11 @@ unsigned engine_threads() {
   return t ? static_cast<unsigned>(std::strtoul(t, nullptr, 10)) : 1u;
 }
 
-void render(benchmark::State& state, const char* kind) {
+void render(benchmark::State& state, const char* kind, unsigned max_level = 0) {
   const BenchScene& s = scene(kind, static_cast<std::size_t>(state.range(0)));
   hlr::HlrOptions options;
   options.threads = engine_threads();
+  options.max_level = max_level;
   hlr::FrameResult result;
   for (auto _ : state) {
     result = hlr::render_frame(s.scene, s.camera, options);
@@ -83,6 +84,9 @@ void BM_Sphere(benchmark::State& state) { render(state, "sphere"); }
 void BM_Torus(benchmark::State& state) { render(state, "torus"); }
 void BM_ClosedMesh(benchmark::State& state) { render(state, "mesh"); }
 void BM_Prism(benchmark::State& state) { render(state, "prism"); }
+// Occlusion levels 1 … range(1) besides the visible lines (0: the visible lines alone, culling on).
+void BM_LevelsMesh(benchmark::State& state) { render(state, "mesh", static_cast<unsigned>(state.range(1))); }
+void BM_LevelsCity(benchmark::State& state) { render(state, "city", static_cast<unsigned>(state.range(1))); }
 void BM_SelfCrossingsTorus(benchmark::State& state) { self_crossings(state, "torus"); }
 void BM_SelfCrossingsMesh(benchmark::State& state) { self_crossings(state, "mesh"); }
 
@@ -99,6 +103,18 @@ BENCHMARK(BM_Sphere)->Arg(100)->Arg(10000)->Arg(1000000)->Unit(benchmark::kMilli
 BENCHMARK(BM_Torus)->Arg(100)->Arg(10000)->Arg(1000000)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_ClosedMesh)->Arg(10000)->Arg(100000)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_Prism)->Arg(2000)->Arg(20000)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_LevelsMesh)
+    ->Args({100000, 0})
+    ->Args({100000, 3})
+    ->ArgNames({"faces", "levels"})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+BENCHMARK(BM_LevelsCity)
+    ->Args({10000, 0})
+    ->Args({10000, 3})
+    ->ArgNames({"faces", "levels"})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
 BENCHMARK(BM_SelfCrossingsTorus)->Arg(10000)->Arg(100000)->Arg(1000000)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_SelfCrossingsMesh)->Arg(100000)->Unit(benchmark::kMillisecond);
 

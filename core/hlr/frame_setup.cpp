@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/geometry/box3.hpp"
 #include "core/geometry/exact_predicates.hpp"
 #include "core/hlr/intersection_lines.hpp"
 #include "core/parallel.hpp"
@@ -63,6 +64,23 @@ bool wholly_in_front(const std::vector<Point3>& view_vertices, const Camera& cam
   if (!is_perspective(camera)) return true;
   return std::all_of(view_vertices.begin(), view_vertices.end(),
                      [&](const Point3& v) { return v.z >= camera.near_depth + tolerance; });
+}
+
+// Per object: whether its bounding box meets another object's (grown by `tol`), by a sweep along x.
+std::vector<char> boxes_meeting_others(const Scene& scene, double tol) {
+  const std::size_t n = scene.objects.size();
+  std::vector<Box3> boxes(n);
+  for (std::size_t o = 0; o < n; ++o)
+    for (const Point3& p : scene.objects[o].solid->vertices) boxes[o].include(p);
+  std::vector<std::size_t> order(n);
+  for (std::size_t o = 0; o < n; ++o) order[o] = o;
+  std::sort(order.begin(), order.end(),
+            [&](std::size_t a, std::size_t b) { return boxes[a].lo.x < boxes[b].lo.x; });
+  std::vector<char> meets(n, 0);
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t j = i + 1; j < n && boxes[order[j]].lo.x <= boxes[order[i]].hi.x + tol; ++j)
+      if (boxes[order[i]].overlaps(boxes[order[j]], tol)) meets[order[i]] = meets[order[j]] = 1;
+  return meets;
 }
 
 // The occluders of faces [face_begin, face_end).
@@ -291,7 +309,7 @@ void append(FrameSetup& setup, FrameSetup&& part) {
 }  // namespace
 
 FrameSetup prepare_frame(const Scene& scene, const Camera& camera, bool keep_culled, unsigned threads,
-                         bool assume_uncrossed, bool cull_back_faces) {
+                         bool assume_uncrossed, BackFaces back_faces) {
   FrameSetup setup;
   setup.scene = &scene;
   const auto& m = camera.viewFromWorld.m;
@@ -311,6 +329,9 @@ FrameSetup prepare_frame(const Scene& scene, const Camera& camera, bool keep_cul
   const std::size_t n = scene.objects.size();
   std::vector<std::vector<std::int8_t>> facing(n);
   std::vector<char> cull(n, 0);
+  const bool levels = back_faces == BackFaces::CountLevels;
+  if (levels) keep_culled = true;
+  const std::vector<char> meets_other = levels ? boxes_meeting_others(scene, ltol) : std::vector<char>(n, 0);
   std::vector<std::vector<Point3>> sliced_view(n);  // view-space vertices of the sliced objects
   struct Job {
     std::size_t object_begin, object_end;  // whole objects; or one sliced object:
@@ -334,7 +355,7 @@ FrameSetup prepare_frame(const Scene& scene, const Camera& camera, bool keep_cul
     // while the surface never winds negatively round a point. A solid passing through itself may (a fold
     // in a scan turns a patch inside out), and so may one folded flat onto itself (Solid::folded), so
     // their back faces stay occluders and their back lines candidates.
-    cull[o] = cull_back_faces && solid.closed && !solid.folded &&
+    cull[o] = !meets_other[o] && solid.closed && !solid.folded &&
               wholly_in_front(view_vertices, camera, ltol) &&
               (assume_uncrossed || solid.self_crossings().empty());
   };

@@ -75,6 +75,18 @@ struct FrameSetup {
   int handedness = 1;
 };
 
+// What a frame does with the back faces of a closed solid wholly in front of the eye that does not pass
+// through itself: such a solid's back faces hide nothing its front faces do not, and what lies on them is
+// hidden.
+enum class BackFaces {
+  Cull,  // they are not occluders, and its edges that only they show are culled (Candidate::culled)
+  // Occlusion levels: the same for a solid whose box meets no other solid's — a sight line to a point
+  // outside it crosses its surface in pairs, front then back, so each front face stands for two surfaces
+  // (FrameSetup::cull) and a culled edge, on its back, has one surface less: it is kept to be examined.
+  // A solid whose box meets another's may cross or hold it: nothing of it is culled.
+  CountLevels,
+};
+
 // Sets c.picture_tolerance from its current picture and view end points.
 void set_picture_tolerance(Candidate& c, const Camera& camera, double length_tolerance);
 
@@ -83,10 +95,8 @@ void set_picture_tolerance(Candidate& c, const Camera& camera, double length_tol
 // candidates are the solids' edges; append_intersection_candidates() adds the lines where faces cross.
 // `assume_uncrossed` culls a closed solid without asking whether it passes through itself (the search
 // may still be running); the caller must check that guess (FrameSetup::cull) once it has the answer.
-// Without `cull_back_faces` every face is an occluder and every drawn edge a candidate (occlusion levels
-// count the back faces too).
 FrameSetup prepare_frame(const Scene& scene, const Camera& camera, bool keep_culled, unsigned threads = 0,
-                         bool assume_uncrossed = false, bool cull_back_faces = true);
+                         bool assume_uncrossed = false, BackFaces back_faces = BackFaces::Cull);
 
 // Appends to the candidates of prepare_frame(scene, camera, keep_culled, …) the pieces of the lines where
 // faces cross (of two solids, or of one: Solid::self_crossings, searched for now if not yet known),

@@ -6,6 +6,9 @@
 // only up to rounding, so the count steps by one for a sliver as long as that rounding; such negligible
 // pieces join their neighbour, exactly as the hidden runs themselves are closed and cleaned
 // (render_frame.cpp), so the levels split each hidden run and never move its ends.
+//
+// Where back faces are culled (frame_setup.hpp, BackFaces::CountLevels) a front face's cover stands for
+// two surfaces, and an edge on the solid's back lies on one of the surfaces so counted: its `surplus`.
 #pragma once
 
 #include <algorithm>
@@ -17,35 +20,42 @@
 
 namespace hlr {
 
+// The parameter interval over which one face hides an edge, and how many surfaces it stands for.
+struct LevelCover {
+  double lo = 0, hi = 0;
+  int surfaces = 1;
+};
+
 struct LevelPiece {
   double lo = 0, hi = 0;
   std::uint16_t level = 0;
 };
 
 struct LevelScratch {
-  std::vector<std::pair<double, int>> events;  // (parameter, +1 entering a cover, −1 leaving it)
+  std::vector<std::pair<double, int>> events;  // (parameter, + surfaces entering a cover, − leaving it)
   std::vector<LevelPiece> steps;               // the count over [0, 1], piece by piece
   std::vector<LevelPiece> run;                 // one hidden run's pieces while they are cleaned
 };
 
-// Splits each of `hidden_runs` (sorted, disjoint) into pieces of one level: the number of `covers`
-// (the intervals as added, overlaps kept) over it. A piece for which is_negligible(lo, hi) holds joins the
+// Splits each of `hidden_runs` (sorted, disjoint) into pieces of one level: the surfaces of the `covers`
+// over it (overlaps kept), less `surplus`. A piece for which is_negligible(lo, hi) holds joins the
 // piece before it (the one after, at a run's start); neighbours of one level become one piece. Every piece
 // of a hidden run has a level of at least 1. Appends to `out`.
 template <typename IsNegligible>
-void split_by_level(const std::vector<Interval>& covers, const std::vector<Interval>& hidden_runs,
-                    IsNegligible&& is_negligible, LevelScratch& scratch, std::vector<LevelPiece>& out) {
+void split_by_level(const std::vector<LevelCover>& covers, int surplus,
+                    const std::vector<Interval>& hidden_runs, IsNegligible&& is_negligible,
+                    LevelScratch& scratch, std::vector<LevelPiece>& out) {
   auto& events = scratch.events;
   events.clear();
-  for (const Interval& c : covers) {
+  for (const LevelCover& c : covers) {
     if (c.hi <= c.lo) continue;
-    events.emplace_back(c.lo, +1);
-    events.emplace_back(c.hi, -1);
+    events.emplace_back(c.lo, c.surfaces);
+    events.emplace_back(c.hi, -c.surfaces);
   }
   std::sort(events.begin(), events.end());
   auto& steps = scratch.steps;
   steps.clear();
-  int count = 0;
+  int count = -surplus;
   double from = 0;
   for (std::size_t i = 0; i < events.size();) {
     const double t = events[i].first;

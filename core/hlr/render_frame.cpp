@@ -53,7 +53,7 @@ struct Worker {
   std::vector<Interval> visible;  // the complement of `hidden`, room reused
   std::size_t face_tests = 0;
   std::vector<VisibleSegment> buffer;  // the current chunk's pieces
-  std::vector<Interval> covers;        // occlusion levels: the hidden intervals as added, one or more a face
+  std::vector<LevelCover> covers;      // occlusion levels: the hidden intervals, one or more a face
   LevelScratch level_scratch;
   std::vector<LevelPiece> levels;
 
@@ -80,7 +80,8 @@ struct Worker {
 
   void process(std::uint32_t index, std::vector<VisibleSegment>& out) {
     const Candidate& c = setup.candidates[index];
-    if (c.culled) {
+    const bool count_levels = options.max_level > 0;
+    if (c.culled && !count_levels) {
       if (options.include_hidden) emit(c, 0, 1, 1, out);
       return;
     }
@@ -106,22 +107,35 @@ struct Worker {
       near[kept++] = id;
     }
     face_tests += kept;
-    for (std::size_t k = 0; k < kept; ++k)
-      add_hidden_intervals(setup, camera, c, setup.occluders[near[k]], scratch, hidden);
+    covers.clear();
+    for (std::size_t k = 0; k < kept; ++k) {
+      const Occluder& o = setup.occluders[near[k]];
+      const std::size_t before = hidden.items().size();
+      add_hidden_intervals(setup, camera, c, o, scratch, hidden);
+      if (!count_levels) continue;
+      const int surfaces =
+          setup.cull[o.object] ? 2 : 1;  // a culled solid's front face and the back behind it
+      for (std::size_t i = before; i < hidden.items().size(); ++i)
+        covers.push_back({hidden.items()[i].lo, hidden.items()[i].hi, surfaces});
+    }
     // Hidden runs that meet up to rounding (across a shared face edge) are one run: the sliver between
     // them is not a visible piece.
     // A hidden run of negligible length (an edge grazing a face's outline) does not split what is seen.
     auto negligible = [&](double t0, double t1) {
       return distance(picture_point(c, t0), picture_point(c, t1)) <= c.picture_tolerance;
     };
-    if (options.max_level > 0) covers.assign(hidden.items().begin(), hidden.items().end());
     hidden.close_gaps(negligible);
     hidden.drop(negligible);
+    if (c.culled) {  // on its solid's back (counting levels): hidden whole, whatever rounding left between
+                     // covers
+      hidden.clear();
+      hidden.add(0, 1);
+    }
     hidden.complement_into(visible);
     for (const Interval& v : visible) emit(c, v.lo, v.hi, 0, out);
-    if (options.max_level > 0) {
+    if (count_levels) {
       levels.clear();
-      split_by_level(covers, hidden.normalize(), negligible, level_scratch, levels);
+      split_by_level(covers, c.culled ? 1 : 0, hidden.normalize(), negligible, level_scratch, levels);
       for (const LevelPiece& p : levels)
         if (p.level <= options.max_level) emit(c, p.lo, p.hi, p.level, out);
     } else if (options.include_hidden) {
@@ -221,8 +235,7 @@ FrameResult render_frame(const Scene& scene, const Camera& camera, const HlrOpti
       }
     }
   } search{crossing_search, options.intersection_lines && options.threads == 0};
-  // Occlusion levels count every surface, back faces too: nothing is culled, so no guess is made.
-  const bool cull_back_faces = options.max_level == 0;
+  const BackFaces back_faces = options.max_level > 0 ? BackFaces::CountLevels : BackFaces::Cull;
   // A closed solid's back faces may be culled only when it does not pass through itself (frame_setup.cpp).
   // Its search too runs beside the edges' preparation and examination, which take the answer to be "it
   // does not" (scenes and scans almost never do); once it is done the guess is checked, and where it was
@@ -233,13 +246,12 @@ FrameResult render_frame(const Scene& scene, const Camera& camera, const HlrOpti
   constexpr std::size_t kOverlapFaces = 250'000;
   std::size_t faces = 0;
   for (const SceneObject& o : scene.objects) faces += o.solid->faces.size();
-  const bool overlap = search.armed && faces <= kOverlapFaces;
-  const bool guess = overlap && cull_back_faces;
-  if (overlap) {
+  const bool guess = search.armed && faces <= kOverlapFaces;
+  if (guess) {
     crossing_search.run([&scene] {
       for (const SceneObject& o : scene.objects) o.solid->self_crossings();
     });
-  } else if (cull_back_faces) {
+  } else {
     for (const SceneObject& o : scene.objects)
       if (o.solid->closed) o.solid->self_crossings();
   }
@@ -250,8 +262,8 @@ FrameResult render_frame(const Scene& scene, const Camera& camera, const HlrOpti
   std::size_t edges = 0;
   std::unique_ptr<const FaceGrid> grid;
   auto prepare = [&](bool assume_uncrossed) {
-    setup = prepare_frame(scene, camera, options.include_hidden, options.threads, assume_uncrossed,
-                          cull_back_faces);
+    setup =
+        prepare_frame(scene, camera, options.include_hidden, options.threads, assume_uncrossed, back_faces);
     check_cancel();
     ms.setup += lap();
     // Only what lies inside the picture frame is examined.

@@ -23,12 +23,12 @@ namespace {
 
 namespace gen = hlr::stdlib;
 
-std::vector<LevelPiece> split(const std::vector<Interval>& covers, const std::vector<Interval>& runs,
-                              double negligible = 0) {
+std::vector<LevelPiece> split(const std::vector<LevelCover>& covers, const std::vector<Interval>& runs,
+                              double negligible = 0, int surplus = 0) {
   LevelScratch scratch;
   std::vector<LevelPiece> out;
-  split_by_level(
-      covers, runs, [&](double lo, double hi) { return hi - lo <= negligible; }, scratch, out);
+  auto is_negligible = [&](double lo, double hi) { return hi - lo <= negligible; };
+  split_by_level(covers, surplus, runs, is_negligible, scratch, out);
   return out;
 }
 
@@ -60,6 +60,12 @@ TEST(OcclusionLevels, SliversAtSharedEdgesJoinTheirNeighbours) {
 TEST(OcclusionLevels, RunsAreSplitApart) {
   expect_pieces(split({{0.1, 0.2}, {0.5, 0.9}, {0.6, 0.7}}, {{0.1, 0.2}, {0.5, 0.9}}),
                 {{0.1, 0.2, 1}, {0.5, 0.6, 1}, {0.6, 0.7, 2}, {0.7, 0.9, 1}});
+}
+
+TEST(OcclusionLevels, CulledSolidsCountTwoSurfacesAFrontFace) {
+  // An edge on a culled solid's back, behind two of its front faces that overlap in the middle: each stands
+  // for itself and the back face behind it, and the edge lies on one of those back faces.
+  expect_pieces(split({{0, 0.6, 2}, {0.4, 1, 2}}, {{0, 1}}, 0, 1), {{0, 0.4, 1}, {0.4, 0.6, 3}, {0.6, 1, 1}});
 }
 
 // Looking along +y, orthographic: three unit boxes in a row at y 0, 2 and 4, shifted in x by a half each,
@@ -174,6 +180,30 @@ TEST(OcclusionLevels, InterpenetratingSolidsFromRandomViews) {
   EXPECT_EQ(t.failed, 0);
   EXPECT_GT(t.per_level[1], 50u);
   EXPECT_GT(t.per_level[3], 10u);
+}
+
+// The mesh scaled about the origin and moved, built again (a solid keeps its faces' planes).
+Solid moved_and_scaled(const Solid& s, double scale, Vector3 offset) {
+  std::vector<Point3> vertices = s.vertices;
+  for (Point3& p : vertices) p = Point3{0, 0, 0} + (scale * (p - Point3{0, 0, 0}) + offset);
+  return mesh_solid(vertices, triangles_of(s));
+}
+
+TEST(OcclusionLevels, SeparateSolidsFromRandomViews) {
+  // Closed solids whose boxes meet no other's: their back faces are culled and each front face counts for
+  // two surfaces; their back edges are examined and lie one surface nearer.
+  Scene scene;
+  auto add = [&](const char* name, Solid s) {
+    scene.objects.push_back({name, std::make_shared<const Solid>(std::move(s))});
+  };
+  add("sphere", gen::sphere({0, 0, 0}, 0.6, 10, 6, 0));
+  add("torus", gen::torus({1.6, 0.3, 0.2}, 0.6, 0.2, 14, 6, 0));
+  add("block", gen::l_block({-1.9, -0.6, -0.5}, {1.2, 1, 1.1}, 0.4, 0.4));
+  add("bumpy", moved_and_scaled(gen::closed_mesh(160, 9), 0.5, {0.2, 1.9, -0.3}));
+  const Tally t = check_views(scene, {0, 0.4, 0}, 2.0, 13, 24, 8);
+  EXPECT_EQ(t.failed, 0);
+  EXPECT_GT(t.per_level[1], 20000u);  // back edges behind their own solid's front
+  EXPECT_GT(t.per_level[3], 2000u);   // and behind another solid too
 }
 
 TEST(OcclusionLevels, OpenAndNonConvexMeshesFromRandomViews) {
