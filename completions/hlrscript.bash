@@ -45,6 +45,7 @@ _hlrscript() {
     --limit) COMPREPLY=($(compgen -W "steps= faces= vertices= segments= memory= calls= list= string=" -- "$cur"))
       compopt -o nospace 2>/dev/null; return ;;
     --allow-path|--out-dir) COMPREPLY=($(compgen -d -- "$cur")); return ;;
+    --levels) COMPREPLY=($(compgen -W "1 2 3 4 5 6 7 8 9 10 11 12 13 14 15 16" -- "$cur")); return ;;
     --frames|--shard|--jobs|-j|--margin|--scale|--dash|--dpi|--line-width|--step|--plan-effort|--frame-timeout)
       return ;;  # a number or a range: nothing to offer
   esac

@@ -229,7 +229,8 @@ std::string dump(const Stmt& stmt) {
           },
           [](const PaperStmt& s) { return "(paper" + paper_text(s.paper) + ")"; },
           [](const StyleStmt& s) {
-            return "(style " + s.property.text + " " + s.value.text + pen_text(s.pen) + ")";
+            return "(style " + s.property.text + " " + s.value.text +
+                   (s.levels ? " " + dump(*s.levels) : "") + pen_text(s.pen) + ")";
           },
           [](const IncludeStmt& s) { return "(include " + quoted(s.path) + ")"; },
           [](const PenStmt& s) {

@@ -163,7 +163,7 @@ struct IfStmt {
   Block then_block;
   std::optional<Block> else_block;  // `else if` is an else block holding one IfStmt
 };
-// `pen N` after a draw or `style hidden dashed`.
+// `pen N` after a draw or `style hidden dashed|levels N`.
 struct PenClause {
   ExprPtr number;
   SourceSpan span;  // from `pen` to the end of N
@@ -196,9 +196,10 @@ struct OutputStmt {
 struct PaperStmt {  // paper SIZE [landscape|portrait] [(OPTIONS)]
   PaperSpec paper;
 };
-struct StyleStmt {  // style hidden dashed|off [pen N]
+struct StyleStmt {  // style hidden dashed|off|levels N [pen P]
   Name property;    // "hidden"
-  Name value;       // "dashed" or "off"
+  Name value;       // "dashed", "off" or "levels"
+  ExprPtr levels;   // N after `levels`; null otherwise
   std::optional<PenClause> pen;
 };
 struct IncludeStmt {  // include "file.hls"

@@ -367,7 +367,8 @@ template <> struct action<g::camera_name> : push_name {};
 template <> struct action<g::paper_size> : push_name {};
 template <> struct action<g::plotter_name> : push_name {};
 template <> struct action<g::style_property> : push_name {};
-template <> struct action<g::style_value> : push_name {};
+template <> struct action<g::style_word> : push_name {};
+template <> struct action<g::style_levels_word> : push_name {};
 template <> struct action<g::orientation> : push_token {};
 template <> struct action<g::param> : make_param {};
 template <> struct action<g::block> : make_block {};
@@ -535,8 +536,13 @@ struct action<g::style_stmt> {
   template <typename Input>
   static void apply(const Input& in, ParseState& s) {
     make_statement(span_of(in, s), s, [](auto it, auto end) {
-      StyleStmt style{take<Name>(it[0]), take<Name>(it[1]), std::nullopt};
-      if (end - it == 3) style.pen = take<PenClause>(it[2]);
+      StyleStmt style{take<Name>(it[0]), take<Name>(it[1]), nullptr, std::nullopt};
+      for (it += 2; it != end; ++it) {
+        if (holds<PenClause>(*it))
+          style.pen = take<PenClause>(*it);
+        else
+          style.levels = box(take<Expr>(*it));  // levels N
+      }
       return style;
     });
   }

@@ -36,7 +36,7 @@
 // Reserved words (never names): solid let def return for in if else draw at camera animate output
 // paper style include then and or not true false. Words with meaning in one place only stay free
 // as names elsewhere: vertex face hole line (inside a solid), frames fps (after animate),
-// landscape portrait (after a paper size), hidden dashed off (after style), pen plotter (at a
+// landscape portrait (after a paper size), hidden dashed off levels (after style), pen plotter (at a
 // statement's start — no statement starts with an expression — and in `draw ... pen N`, `style hidden
 // dashed pen N`, `output ... plotter NAME`). Where such a clause could also be the next statement
 // (`draw a` then `pen 2 (colour: "red")`), a lookahead for the statement's shape decides.
@@ -429,7 +429,7 @@ struct if_body : seq< block > {};
 struct else_body : sor< if_stmt, block > {};
 struct if_stmt : seq< key_if, sp, must< if_condition >, sp, must< if_body >, opt< sp, key_else, sp, must< else_body > > > {};
 
-// `pen N` after a draw or `style hidden dashed`; not when it is the start of a pen statement, `pen N (`
+// `pen N` after a draw or `style hidden dashed|levels N`; not when it is the start of a pen statement, `pen N (`
 // followed by `)` or `NAME:` (N a number, a name or a parenthesised expression, as in pen_stmt).
 struct pen_number : sor< number, name_ref, seq< not_at< one< '(' >, sp, arg_label >, paren_expr > > {};
 struct pen_stmt_ahead : seq< key_pen, sp, pen_number, sp, one< '(' >, sp, sor< one< ')' >, arg_label > > {};
@@ -468,8 +468,13 @@ struct output_plotter : seq< not_at< plotter_stmt_ahead >, key_plotter, sp, must
 struct output_stmt : seq< key_output, sp, must< output_pattern >, opt< sp, sor< output_paper, orientation > >, opt< sp, output_plotter > > {};
 struct paper_stmt : seq< key_paper, sp, must< paper_size >, opt< sp, orientation >, opt< sp, paper_options > > {};
 
+// style hidden dashed|off|levels N [pen P]; N an expression, as a pen clause's number — but not `pen P`
+// itself, so that a forgotten N is reported at the pen rather than read as a variable named pen.
 struct style_property : key< TAO_PEGTL_STRING( "hidden" ) > {};
-struct style_value : sor< key< TAO_PEGTL_STRING( "dashed" ) >, key< TAO_PEGTL_STRING( "off" ) > > {};
+struct style_word : sor< key< TAO_PEGTL_STRING( "dashed" ) >, key< TAO_PEGTL_STRING( "off" ) > > {};
+struct style_levels_word : key< TAO_PEGTL_STRING( "levels" ) > {};
+struct levels_count : seq< not_at< key_pen, sp, pen_number >, expression > {};
+struct style_value : sor< style_word, seq< style_levels_word, sp, must< levels_count > > > {};
 struct style_stmt : seq< key_style, sp, must< style_property >, sp, must< style_value >, opt< sp, pen_clause > > {};
 
 // pen N (colour: "red", width: 0.35). N is a number, a name or a parenthesised expression — not a

@@ -90,9 +90,10 @@ class Checker {
   }
   void visit(const Stmt&, const PaperStmt& s) { arguments(s.paper.options); }
   void visit(const Stmt&, const StyleStmt& s) {
+    if (s.levels) expr(*s.levels);
     if (!s.pen) return;
-    if (s.value.text != "dashed") {
-      error(s.pen->span, "a pen goes only with 'style hidden dashed'",
+    if (s.value.text == "off") {
+      error(s.pen->span, "a pen goes only with 'style hidden dashed' or 'style hidden levels N'",
             "hidden lines that are off are not drawn: remove the pen, or write 'style hidden dashed pen N'");
     }
     expr(*s.pen->number);

@@ -34,6 +34,7 @@ void cut_into_dashes(const PlotStroke& stroke, const DashPattern& pattern, doubl
   PlotStroke current;
   current.pen = stroke.pen;
   current.layer = stroke.layer;
+  current.level = stroke.level;
   const auto add_point = [&](Point2 p) {
     const Point2 q = snapped(p, grid);
     if (current.points.empty() || !(current.points.back() == q)) current.points.push_back(q);

@@ -8,6 +8,7 @@
 #include <exception>
 #include <map>
 #include <stdexcept>
+#include <tuple>
 #include <utility>
 
 #include "core/plan/euler_strokes.hpp"
@@ -28,6 +29,7 @@ using Clock = std::chrono::steady_clock;
 struct Group {
   int pen;
   StrokeLayer layer;
+  int level;
   std::vector<GridSegment> segments;  // snapped, non-degenerate, in file order
   PenGraph graph;
 };
@@ -41,9 +43,11 @@ bool snap(double mm, double grid, std::int64_t& out) {
 }
 
 std::vector<Group> snap_groups(const std::vector<PlotPiece>& pieces, double grid, std::size_t& dropped) {
-  std::map<std::pair<int, int>, std::size_t> index;  // (pen, layer) → group; Visible (0) before Hidden (1)
+  // (pen, layer, level) → group: Visible (0) before Hidden (1), hidden levels ascending.
+  using Key = std::tuple<int, int, int>;
+  std::map<Key, std::size_t> index;
   std::vector<Group> groups;
-  std::pair<int, int> last_key{0, -1};  // consecutive pieces mostly share their group: ask the map less
+  Key last_key{0, -1, 0};  // consecutive pieces mostly share their group: ask the map less
   std::size_t last_group = 0;
   for (const PlotPiece& p : pieces) {
     GridSegment s;
@@ -52,10 +56,10 @@ std::vector<Group> snap_groups(const std::vector<PlotPiece>& pieces, double grid
       ++dropped;
       continue;
     }
-    const auto key = std::make_pair(p.pen, p.layer == StrokeLayer::Visible ? 0 : 1);
+    const Key key{p.pen, p.layer == StrokeLayer::Visible ? 0 : 1, p.level};
     if (key != last_key) {
       auto [it, inserted] = index.try_emplace(key, groups.size());
-      if (inserted) groups.push_back(Group{p.pen, p.layer, {}, {}});
+      if (inserted) groups.push_back(Group{p.pen, p.layer, p.level, {}, {}});
       last_key = key;
       last_group = it->second;
     }
@@ -147,6 +151,7 @@ void emit_strokes(const std::vector<Group>& groups, const Sequence& seq, double 
       PlotStroke ps;
       ps.pen = groups[gi].pen;
       ps.layer = groups[gi].layer;
+      ps.level = groups[gi].level;
       ps.points.reserve(s.vertices.size());
       GridPoint kept = v[s.vertices.front()];
       ps.points.push_back(to_mm(kept, grid));
@@ -172,6 +177,7 @@ void file_order_strokes(const std::vector<Group>& groups, double grid, std::vect
         PlotStroke ps;
         ps.pen = g.pen;
         ps.layer = g.layer;
+        ps.level = g.level;
         ps.points.push_back(to_mm(s.a, grid));
         out.push_back(std::move(ps));
         open = true;

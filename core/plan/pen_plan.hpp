@@ -19,6 +19,7 @@ struct PlotPiece {
   Point2 a, b;
   int pen = 1;
   StrokeLayer layer = StrokeLayer::Visible;
+  int level = 0;  // hidden pieces drawn by occlusion level: 1, 2, …; else 0 (PlotStroke::level)
 };
 
 enum class PenOrder {

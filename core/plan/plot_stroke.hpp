@@ -17,6 +17,9 @@ struct PlotStroke {
   std::vector<Point2> points;  // at least two; consecutive points differ
   int pen = 1;                 // 1-based pen (colour, width; the HPGL `SP` number)
   StrokeLayer layer = StrokeLayer::Visible;
+  // Hidden strokes drawn by occlusion level (`style hidden levels N`): how many surfaces hide them, 1..N,
+  // each level a layer of its own. 0 for visible strokes and for plain dashed hidden ones.
+  int level = 0;
 };
 
 }  // namespace hlr

@@ -40,7 +40,9 @@ const StatementHelp kStatements[] = {
      "Where the drawing goes (.pdf .svg .png .hpgl .gcode .steps .json .jsonl); -o overrides it."},
     {"paper", "paper SIZE [landscape|portrait] [(margin: MM, scale: MM_PER_UNIT)]",
      "The page: A4, A3, letter, ... or custom (width: W, height: H)."},
-    {"style", "style hidden dashed|off [pen N]", "Draws hidden lines dashed, or leaves them out."},
+    {"style", "style hidden dashed|off|levels N [pen P]",
+     "Draws hidden lines dashed, or leaves them out; levels N draws those behind 1..N surfaces, each level "
+     "a layer of its own (in pen P + level - 1 with a pen)."},
     {"include", "include \"file.hls\"  |  include \"std/NAME.hls\"",
      "Runs another script in place, once; std/ names the library modules."},
     {"pen", "pen N (colour: \"red\", width: 0.35)", "Sets a pen's colour and width for every device."},

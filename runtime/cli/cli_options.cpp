@@ -11,6 +11,7 @@
 #include <set>
 #include <sstream>
 
+#include "core/device/page/hidden_style.hpp"
 #include "core/device/page/page_layout.hpp"
 #include "core/format_number.hpp"
 #include "core/limits.hpp"
@@ -41,6 +42,9 @@ po::options_description visible_options() {
        "use N threads for frames and the hidden lines inside them (default 0: one per core)")  //
       ("hidden", po::value<std::string>()->value_name("off|dashed"),
        "hidden lines: off, or dashed (overrides the script)")  //
+      ("levels", po::value<std::string>()->value_name("N"),
+       "hidden lines by occlusion level: the pieces behind 1..N surfaces (N from 1 to 16), each level a "
+       "layer and dash of its own (overrides the script's style hidden, keeps its pen)")  //
       ("limit", po::value<std::vector<std::string>>()->value_name("NAME=N")->composing(),
        "raise (or lower) a limit of each frame, repeatable: steps (evaluation steps, 10000000), faces "
        "(built and drawn, 10000000), vertices (drawn, 30000000), segments (visible pieces, 20000000), memory "
@@ -332,7 +336,7 @@ std::string usage_text() {
   std::ostringstream s;
   s << "usage: hlrscript FILE.hls [-o OUT.pdf|.svg|.png|.hpgl|.gcode|.json|.jsonl] [--camera NAME] [--frames "
        "A-B]\n"
-       "                          [--shard K/N] [--jobs N] [--hidden off|dashed] [--stats]\n"
+       "                          [--shard K/N] [--jobs N] [--hidden off|dashed | --levels N] [--stats]\n"
        "                          [--paper SIZE] [--portrait] [--margin MM] [--scale MM] [--dpi N]\n"
        "                          [--fit camera|drawing]\n"
        "                          [--plotter NAME] [--clip] [--pen-order none|greedy|optimized]\n"
@@ -444,11 +448,23 @@ std::optional<CliOptions> parse_cli(int argc, const char* const argv[], std::ost
       return usage_error(err, "--jobs " + text + ": expected a whole number from 0 to 1024");
     o.jobs = n;
   }
+  if (vm.count("hidden") && vm.count("levels"))
+    return usage_error(err,
+                       "--hidden and --levels exclude each other: --levels N draws the hidden lines too");
   if (vm.count("hidden")) {
     const std::string v = vm["hidden"].as<std::string>();
     if (v != "off" && v != "dashed")
       return usage_error(err, "--hidden takes 'off' or 'dashed', not '" + v + "'");
-    o.hidden = v == "dashed";
+    o.hidden = v == "dashed" ? HiddenStyle::dashed() : HiddenStyle::off();
+  }
+  if (vm.count("levels")) {
+    const std::string text = vm["levels"].as<std::string>();
+    int n = 0;
+    const auto r = std::from_chars(text.data(), text.data() + text.size(), n);
+    if (r.ec != std::errc() || r.ptr != text.data() + text.size() || !valid_level_count(n))
+      return usage_error(err, "--levels " + text + ": expected a whole number from 1 to " +
+                                  std::to_string(kMaxOcclusionLevel) + " (the occlusion levels drawn)");
+    o.hidden = HiddenStyle::counted(n);
   }
   o.stats = vm.count("stats") > 0;
   o.keep_going = vm.count("keep-going") > 0;

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "core/format_number.hpp"
+#include "core/limits.hpp"
 #include "runtime/eval/eval_detail.hpp"
 #include "runtime/eval/evaluator.hpp"
 
@@ -76,15 +77,38 @@ void Evaluator::exec_output(const lang::OutputStmt& output, const lang::Stmt& st
 void Evaluator::exec_style(const lang::StyleStmt& style, const lang::Stmt& stmt, const ScopePtr& scope) {
   if (style.property.text != "hidden")
     fail(style.property.span, "unknown style '" + style.property.text + "'",
-         "the style is: style hidden dashed|off [pen N]");
+         "the style is: style hidden dashed|off|levels N [pen P]");
   if (out_.hidden_span) already_set(stmt.span, "style hidden", *out_.hidden_span);
-  if (style.value.text != "dashed" && style.value.text != "off")
-    fail(style.value.span, "style hidden takes 'dashed' or 'off', got '" + style.value.text + "'");
-  const bool dashed = style.value.text == "dashed";
-  if (style.pen && !dashed)  // the syntax check reports it first
-    fail(style.pen->span, "a pen goes only with 'style hidden dashed'");
-  if (style.pen) out_.hidden_pen = eval_pen_number(*style.pen->number, scope);
-  out_.hidden = dashed;
+  const std::string& value = style.value.text;
+  if (value != "dashed" && value != "off" && value != "levels")
+    fail(style.value.span, "style hidden takes 'dashed', 'off' or 'levels N', got '" + value + "'");
+  if (style.pen && value == "off")  // the syntax check reports it first
+    fail(style.pen->span, "a pen goes only with 'style hidden dashed' or 'style hidden levels N'");
+  HiddenStyle hidden = value == "dashed" ? HiddenStyle::dashed() : HiddenStyle::off();
+  if (value == "levels") {
+    if (!style.levels)
+      fail(style.value.span, "'levels' needs a number of levels, as in 'style hidden levels 3'");
+    const double n = eval_number(*style.levels, scope, "the number of levels");
+    if (!(n >= 1 && n <= kMaxOcclusionLevel) || std::floor(n) != n)
+      fail(style.levels->span,
+           "the number of levels must be a whole number from 1 to " + std::to_string(kMaxOcclusionLevel) +
+               ", got " + format_for_message(n),
+           "level k is the hidden pieces behind k surfaces: 'style hidden levels 3' draws levels 1, 2 and 3");
+    hidden = HiddenStyle::counted(static_cast<int>(n));
+  }
+  if (style.pen) {
+    const int pen = eval_pen_number(*style.pen->number, scope);
+    // Level k is drawn in pen P + k − 1: the last level's pen must exist too.
+    if (hidden.counts_levels() && pen + hidden.levels - 1 > kMaxPen)
+      fail(style.pen->span,
+           "levels 1.." + std::to_string(hidden.levels) + " from pen " + std::to_string(pen) +
+               " need pens up to " + std::to_string(pen + hidden.levels - 1) + ", past the last pen, " +
+               std::to_string(kMaxPen),
+           "level k is drawn in pen P + k - 1: start from pen " +
+               std::to_string(kMaxPen - hidden.levels + 1) + " or lower, or draw fewer levels");
+    out_.hidden_pen = pen;
+  }
+  out_.hidden = hidden;
   out_.hidden_span = stmt.span;
 }
 

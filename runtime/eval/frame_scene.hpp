@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "core/camera/camera.hpp"
+#include "core/device/page/hidden_style.hpp"
 #include "core/device/page/page_layout.hpp"
 #include "core/device/plotters/gcode_profile.hpp"
 #include "core/device/plotters/hpgl_profile.hpp"
@@ -85,9 +86,9 @@ struct FrameScene {
   std::optional<AnimationSetting> animation;
   std::optional<OutputSetting> output;
   std::optional<PaperSetting> paper;
-  std::optional<bool> hidden;  // style hidden dashed (true) | off (false)
+  std::optional<HiddenStyle> hidden;  // style hidden dashed | off | levels N
   std::optional<lang::SourceSpan> hidden_span;
-  std::optional<int> hidden_pen;               // style hidden dashed pen N
+  std::optional<int> hidden_pen;               // style hidden dashed|levels N pen P
   std::vector<int> object_pens;                // by scene object: draw ... pen N (default 1)
   std::optional<lang::SourceSpan> first_draw;  // what the first draw statement draws
   std::vector<PenSetting> pens;                // pen statements, each pen number at most once

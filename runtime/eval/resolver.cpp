@@ -171,6 +171,7 @@ class Resolver {
                    },
                    [&](const lang::PaperStmt& s) { options(s.paper.options, scope); },
                    [&](const lang::StyleStmt& s) {
+                     optional(s.levels, scope);
                      if (s.pen) expr(*s.pen->number, scope);
                    },
                    [&](const lang::IncludeStmt& s) {

@@ -97,7 +97,8 @@ void run_frame(const Program& program, int frame, double fps, const PipelineOpti
   if (!options.render) return;
 
   HlrOptions hlr;
-  hlr.include_hidden = settings.hidden;
+  hlr.include_hidden = settings.hidden.drawn();
+  hlr.max_level = settings.hidden.max_level();  // by level: the engine counts the surfaces in front
   hlr.threads = engine_threads;
   hlr.cancel = &interrupt_requested();
   hlr.deadline = scene.deadline;
@@ -162,11 +163,12 @@ void run_frame(const Program& program, int frame, double fps, const PipelineOpti
   frame_out.camera = &settings.camera_on_page;
   frame_out.segments = &result.segments;
   frame_out.object_names = &r.object_names;
-  frame_out.include_hidden = settings.hidden;
+  frame_out.hidden = settings.hidden;
   frame_out.plot = plot_page(result.segments, camera.frame, settings.caption, settings.plot);
   if (Clock::now() > scene.deadline) out_of_time("the pen plan");
   r.plan = frame_out.plot.stats;
   r.visible_segments = frame_out.plot.visible_segments;
+  r.level_pieces = frame_out.plot.level_pieces;
   if (options.write) {
     try {
       const auto encode_start = Clock::now();

@@ -88,12 +88,13 @@ struct FrameRecord {
   std::vector<std::string> object_names;  // by VisibleSegment::object
   std::size_t faces = 0;                  // faces drawn
   std::size_t segments = 0;               // pieces the engine returned (hidden ones included when on)
-  bool hidden = false;
+  HiddenStyle hidden;
   FrameStats stats;
   double evaluate_seconds = 0, render_seconds = 0;
   std::filesystem::path path;  // the file it went to
   PlanStats plan;
   std::size_t visible_segments = 0;           // pieces given to the pen plan
+  std::vector<std::size_t> level_pieces;      // by occlusion level: [k] the hidden pieces of level k
   double encode_seconds = 0;                  // the device's encode() of the planned page
   std::size_t encoded_bytes = 0;              // what encode() made for the file
   std::vector<VisibleSegment> kept_segments;  // with keep_segments only

@@ -6,6 +6,7 @@
 #include "core/device/formats/devices.hpp"
 #include "core/device/page/atomic_file.hpp"
 #include "core/device/page/pen_style.hpp"
+#include "core/limits.hpp"
 #include "runtime/base/eval_error.hpp"
 #include "runtime/pipeline/frame_pipeline.hpp"
 
@@ -235,7 +236,15 @@ FrameSettings resolve_target(const FrameScene& scene, std::size_t index, const R
                              const Program& program) {
   FrameSettings s;
   s.camera = &choose_camera(scene, run.camera, program.main().source->name());
-  s.hidden = run.hidden.value_or(scene.hidden.value_or(false));
+  s.hidden = run.hidden.value_or(scene.hidden.value_or(HiddenStyle::off()));
+  // --levels N keeps the script's hidden pen, whose last level's pen must exist: said at the statement.
+  if (s.hidden.counts_levels() && scene.hidden_pen && *scene.hidden_pen + s.hidden.levels - 1 > kMaxPen)
+    fail(*scene.hidden_span,
+         "--levels " + std::to_string(s.hidden.levels) + " from this hidden pen " +
+             std::to_string(*scene.hidden_pen) + " needs pens up to " +
+             std::to_string(*scene.hidden_pen + s.hidden.levels - 1) + ", past the last pen, " +
+             std::to_string(kMaxPen),
+         "level k is drawn in pen P + k - 1: fewer levels, or a lower pen in 'style hidden ... pen P'");
   s.target = target_for_frame(run.output, {scene.time.frame, scene.output}, index, program);
   return s;
 }
@@ -269,7 +278,7 @@ void resolve_device(const FrameScene& scene, const RunSettings& run, FrameSettin
   plot.plan.threads = 2;
   plot.object_pens = scene.object_pens;
   plot.hidden_pen = scene.hidden_pen;
-  plot.include_hidden = s.hidden;
+  plot.hidden = s.hidden;
   if (planning.hidden_as_dashes) plot.hidden_dashes = run.device.dash;  // unset with --dash solid
   s.caption = caption_for(scene, *s.camera, run);
 }

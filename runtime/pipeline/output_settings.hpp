@@ -20,7 +20,7 @@ struct RunSettings {
   std::string title;                  // the script's name: captions, PDF and JSON metadata
   int frame_count = 1;                // of the animation, for captions
   std::optional<std::string> camera;  // --camera NAME; else the last camera declared
-  std::optional<bool> hidden;         // --hidden; else the script's style, else off
+  std::optional<HiddenStyle> hidden;  // --hidden or --levels; else the script's style, else off
   std::optional<std::string> output;  // -o pattern
   DeviceOptions device;               // --paper, --plotter, --dpi, ...
 };
@@ -30,7 +30,7 @@ struct FrameSettings {
   // The camera with its picture frame on this page (core/device/page/page_layout.hpp framed_camera): what the
   // engine clips to and the devices lay out. Set by resolve_device().
   Camera camera_on_page;
-  bool hidden = false;  // hidden pieces are computed, planned and drawn
+  HiddenStyle hidden;  // whether (and by which levels) hidden pieces are computed, planned and drawn
   OutputTarget target;
   std::shared_ptr<const Device> device;
   PagePlotOptions plot;  // page (margin widened to the device's reach), pens by object, plan settings

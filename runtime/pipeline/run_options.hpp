@@ -6,6 +6,7 @@
 #include <optional>
 #include <string>
 
+#include "core/device/page/hidden_style.hpp"
 #include "runtime/base/file_access.hpp"
 #include "runtime/base/limits.hpp"
 #include "runtime/pipeline/frame_selection.hpp"
@@ -33,8 +34,8 @@ struct RunOptions {
   std::optional<std::string> camera;
   std::optional<FrameList> frames;
   std::optional<Shard> shard;
-  std::optional<bool> hidden;
-  unsigned jobs = 0;  // --jobs: threads for frames and the work inside them; 0: one per core
+  std::optional<HiddenStyle> hidden;  // --hidden off|dashed or --levels N; else the script's style
+  unsigned jobs = 0;                  // --jobs: threads for frames and the work inside them; 0: one per core
   bool stats = false;
   bool keep_going = false;  // --keep-going: render the other frames when one fails
   bool verbose = false;     // --verbose: also the notes on what the script asked to accept

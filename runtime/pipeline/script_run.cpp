@@ -159,6 +159,12 @@ void print_stats(std::ostream& err, const PipelineResult& result) {
           s.pen_up_mm, s.pen_up_mean_mm, s.pen_up_median_mm, s.lifts, s.lift_lower_bound, dashes,
           s.plot_seconds, s.planning_ms, f.encode_seconds * 1e3, f.encoded_bytes);
       err << line;
+      if (f.level_pieces.size() > 1) {  // drawn by occlusion level
+        err << "frame " << f.time.frame << " hidden pieces by level:";
+        for (std::size_t k = 1; k < f.level_pieces.size(); ++k)
+          err << (k > 1 ? ", " : " ") << k << ": " << f.level_pieces[k];
+        err << "\n";
+      }
     }
 }
 

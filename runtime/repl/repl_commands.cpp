@@ -44,11 +44,13 @@ const Command kCommands[] = {
     {"dolly", ":dolly D", "move the eye D scene units forward along the view"},
     {"frame", ":frame N", "look at frame N of the animation"},
     {"frames", ":frames", "how many frames the animation has, at what rate, and the one looked at"},
-    {"hidden", ":hidden on|off", "draw hidden lines dashed, or not"},
+    {"hidden", ":hidden on|off", "draw hidden lines dashed, or not (off ends :levels too)"},
+    {"levels", ":levels N",
+     "draw hidden lines by occlusion level: those behind 1..N surfaces (N from 1 to 16), a layer each"},
     {"stats", ":stats", "faces, edges, visible pieces, pen plan, render time of the current frame"},
     {"scene", ":scene", "what is drawn, with sizes, and the cameras"},
     {"undo", ":undo",
-     "take back the last change: an input, :load, :orbit, :zoom, :dolly, :camera, :hidden, :frame"},
+     "take back the last change: an input, :load, :orbit, :zoom, :dolly, :camera, :hidden, :levels, :frame"},
     {"save", ":save FILE", "write the session as a script that renders the same drawing"},
     {"quit", ":quit", "leave (Ctrl-D too)"},
 };
@@ -96,9 +98,20 @@ ReplReply ReplSession::command(const std::string& line) {
   if (cmd == "hidden") {
     if (arg != "on" && arg != "off") return error(":hidden needs on or off");
     State before = state();
-    hidden_ = arg == "on";
+    hidden_ = arg == "on" ? HiddenStyle::dashed() : HiddenStyle::off();
     remember(":hidden " + arg, std::move(before));
-    return done(std::string("hidden lines ") + (*hidden_ ? "dashed" : "off") + "\n");
+    return done("hidden lines " + hidden_->words() + "\n");
+  }
+  if (cmd == "levels") {
+    char* end = nullptr;
+    const long n = std::strtol(arg.c_str(), &end, 10);
+    if (arg.empty() || *end != '\0' || !valid_level_count(n))
+      return error(":levels needs a whole number from 1 to " + std::to_string(kMaxOcclusionLevel) +
+                   ", as in :levels 3");
+    State before = state();
+    hidden_ = HiddenStyle::counted(static_cast<int>(n));
+    remember(":levels " + arg, std::move(before));
+    return done("hidden lines by occlusion level, levels 1 to " + std::to_string(n) + "\n");
   }
   if (cmd == "camera") {
     const std::string dropped =

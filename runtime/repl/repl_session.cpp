@@ -273,7 +273,9 @@ std::optional<ReplSession::View> ReplSession::view(std::string& message) const {
     // Framed as `:render` frames it on the session's paper, so the terminal shows what the file will.
     v.view_camera = framed_camera(c.camera, page_spec_for(v.scene, DeviceOptions{}));
     HlrOptions o;
-    o.include_hidden = hidden_.value_or(v.scene.hidden.value_or(false));
+    const HiddenStyle hidden = hidden_.value_or(v.scene.hidden.value_or(HiddenStyle::off()));
+    o.include_hidden = hidden.drawn();  // the picture draws every level as a hidden line
+    o.max_level = hidden.max_level();
     o.cancel = &interrupt_requested();
     const auto start = std::chrono::steady_clock::now();
     v.result = render_frame(v.scene.scene, v.view_camera, o);
@@ -319,7 +321,7 @@ ReplReply ReplSession::stats() {
   }
   PagePlotOptions plot;
   plot.spec = page_spec_for(v->scene, DeviceOptions{});
-  plot.include_hidden = hidden_.value_or(v->scene.hidden.value_or(false));
+  plot.hidden = hidden_.value_or(v->scene.hidden.value_or(HiddenStyle::off()));
   const PagePlot page = plot_page(v->result.segments, v->view_camera.frame, "", plot);
   const PlanStats& s = page.stats;
   char line[512];
@@ -388,9 +390,11 @@ std::optional<std::string> camera_expression(const Chunks& chunks, const std::op
   return std::nullopt;
 }
 
-// Makes every top-level `style hidden` statement of the chunks say `on`; false when there is none.
+// Makes every top-level `style hidden` statement of the chunks say `style`; false when there is none.
+// Dashed or levels keep the statement's pen clause (levels count from it); off drops it (a pen there is an
+// error).
 template <typename Chunks>
-bool set_hidden_style(Chunks& chunks, bool on) {
+bool set_hidden_style(Chunks& chunks, const HiddenStyle& style) {
   bool found = false;
   for (auto& chunk : chunks) {
     const lang::ParseResult parsed = lang::parse(chunk.text, "<input>");
@@ -398,12 +402,15 @@ bool set_hidden_style(Chunks& chunks, bool on) {
     std::string text = chunk.text;
     const auto& statements = parsed.script->statements;
     for (auto stmt = statements.rbegin(); stmt != statements.rend(); ++stmt) {  // from the end: spans hold
-      const auto* style = std::get_if<lang::StyleStmt>(&stmt->node);
-      if (!style || style->property.text != "hidden") continue;
+      const auto* style_stmt = std::get_if<lang::StyleStmt>(&stmt->node);
+      if (!style_stmt || style_stmt->property.text != "hidden") continue;
       found = true;
-      if ((style->value.text == "dashed") == on) continue;  // already says so (and keeps its pen)
-      text.replace(stmt->span.begin, stmt->span.end - stmt->span.begin,
-                   on ? "style hidden dashed" : "style hidden off");
+      // Up to the pen clause, kept (N may be `(…)`, whose node spans only what is inside), or the whole
+      // statement for off and for a statement without a pen.
+      const bool keep_pen = style.drawn() && style_stmt->pen;
+      const std::size_t end = keep_pen ? style_stmt->pen->span.begin : stmt->span.end;
+      text.replace(stmt->span.begin, end - stmt->span.begin,
+                   "style hidden " + style.words() + (keep_pen ? " " : ""));
     }
     chunk.text = std::move(text);
   }
@@ -416,8 +423,7 @@ std::string ReplSession::script() const {
   std::vector<Chunk> chunks = chunks_;
   std::string tail;
   // :hidden wins over the session's own style statement, which would otherwise be set twice.
-  if (hidden_ && !set_hidden_style(chunks, *hidden_))
-    tail += *hidden_ ? "style hidden dashed\n" : "style hidden off\n";
+  if (hidden_ && !set_hidden_style(chunks, *hidden_)) tail += "style hidden " + hidden_->words() + "\n";
   std::string text;
   if (step_) {
     text = view_text(chunks);  // the adjusted camera, declared last, draws

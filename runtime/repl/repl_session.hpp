@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "core/camera/camera_adjust.hpp"
+#include "core/device/page/hidden_style.hpp"
 #include "runtime/base/file_access.hpp"
 #include "runtime/base/limits.hpp"
 #include "runtime/repl/terminal_graphics.hpp"
@@ -92,7 +93,7 @@ class ReplSession {
   struct State {
     std::vector<Chunk> chunks;
     int frame = 0;
-    std::optional<bool> hidden;
+    std::optional<HiddenStyle> hidden;
     std::optional<std::string> camera;
     std::optional<CameraAdjustment> step;
     std::string stepped_name;
@@ -110,7 +111,7 @@ class ReplSession {
   std::vector<std::pair<std::string, State>> undo_;  // what each change did, and the state before it
   std::string pending_;                              // lines of an unfinished statement
   int frame_ = 0;
-  std::optional<bool> hidden_;                   // :hidden on|off
+  std::optional<HiddenStyle> hidden_;            // :hidden on|off, :levels N
   std::optional<std::string> camera_;            // :camera NAME
   std::optional<CameraAdjustment> step_;         // :orbit, :zoom, :dolly since the camera was chosen
   std::string stepped_name_;                     // the adjusted camera's name in view_text()

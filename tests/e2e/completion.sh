@@ -59,6 +59,8 @@ expect_has top_down views.hls --camera t
 expect_lacks front --camera ""  # no script on the line: no cameras to offer
 for p in hp7475a roland-dxy generic grbl-servo grbl-z; do expect_has "$p" views.hls --plotter ""; done
 expect_has dashed views.hls --hidden d
+expect_has 16 views.hls --levels 1
+expect_lacks 17 views.hls --levels 1
 expect_has plotter views.hls --svg p
 expect_has outline views.hls --text o
 expect_has optimized --pen-order o

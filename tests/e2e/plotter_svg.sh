@@ -34,6 +34,13 @@ while IFS= read -r script; do
 done < <(find "$examples" -name '*.hls' | sort)
 [ "$count" -ge 15 ] || fail "only $count examples rendered"
 
+# Occlusion levels as the example asks for them (no --hidden): a layer per pen and level, "N hidden K".
+levels=$examples/showcase/occlusion-levels.hls
+"$hlrscript" "$levels" -o levels.svg --svg plotter >/dev/null 2>levels.err || fail "levels .svg: $(head -3 levels.err)"
+"$hlrscript" "$levels" -o levels.json --text stroke >/dev/null 2>levels.err || fail "levels .json: $(head -3 levels.err)"
+python3 "$here/plotter_svg_check.py" levels.svg levels.json || fail "the occlusion levels' plotter SVG disagrees"
+grep -q 'inkscape:label="2 hidden 1"' levels.svg || fail "no layer '2 hidden 1' in the occlusion levels' SVG"
+
 # What selects it.
 scene=$examples/showcase/pens-and-plotter.hls
 "$hlrscript" "$scene" --frames 0 -o named.svg --plotter hp7475a >/dev/null 2>&1 || fail "--plotter with .svg failed"

@@ -73,8 +73,11 @@ def main():
         m = re.fullmatch(r"(\d+) (.+)", label)
         if not m:
             fail(f"layer label '{label}' does not start with its pen number")
-        pen, hidden = int(m.group(1)), m.group(2) == "hidden"
-        layer_keys.append((pen, hidden))
+        # "N hidden", or by occlusion level "N hidden K"
+        level_match = re.fullmatch(r"hidden(?: (\d+))?", m.group(2))
+        pen, hidden = int(m.group(1)), bool(level_match)
+        level = int(level_match.group(1)) if level_match and level_match.group(1) else 0
+        layer_keys.append((pen, hidden, level))
         if child.get("fill") != "none" or not child.get("stroke") or not child.get("stroke-width"):
             fail(f"layer '{label}' is not stroke-only")
         last = -1
@@ -87,20 +90,24 @@ def main():
             if index <= last:
                 fail(f"layer '{label}': path s{index} after s{last}, not in planned order")
             last = index
-            paths[index] = (pen, hidden, points_of(path.get("d")), float(child.get("stroke-width")))
+            paths[index] = (pen, hidden, points_of(path.get("d")), float(child.get("stroke-width")), level)
     if layer_keys != sorted(layer_keys) or len(set(layer_keys)) != len(layer_keys):
         fail(f"layers {layer_keys} are not one per pen and layer, in pen order")
 
     visible = [p for _, p in sorted(paths.items()) if not p[1]]
     hidden = [p for _, p in sorted(paths.items()) if p[1]]
-    for name, got, strokes, pens in (("strokes", visible, frame["strokes"], frame["stroke_pens"]),
-                                     ("hidden_strokes", hidden, frame.get("hidden_strokes", []),
-                                      frame.get("hidden_stroke_pens", []))):
+    hidden_levels = frame.get("hidden_stroke_levels", [0] * len(frame.get("hidden_strokes", [])))
+    for name, got, strokes, pens, levels in (
+            ("strokes", visible, frame["strokes"], frame["stroke_pens"], [0] * len(frame["strokes"])),
+            ("hidden_strokes", hidden, frame.get("hidden_strokes", []), frame.get("hidden_stroke_pens", []),
+             hidden_levels)):
         if len(got) != len(strokes):
             fail(f"{len(got)} paths, the JSON has {len(strokes)} {name}")
-        for k, (path, stroke, pen) in enumerate(zip(got, strokes, pens)):
+        for k, (path, stroke, pen, level) in enumerate(zip(got, strokes, pens, levels)):
             if path[0] != pen:
                 fail(f"{name}[{k}] is pen {pen}, its path is in pen {path[0]}'s layer")
+            if path[4] != level:
+                fail(f"{name}[{k}] is at level {level}, its path in a layer of level {path[4]}")
             if not same_points(path[2], [tuple(p) for p in stroke]):
                 fail(f"{name}[{k}] differs from its path: {stroke[:3]}... vs {path[2][:3]}...")
 
@@ -110,10 +117,10 @@ def main():
         parts = line.split(",")
         if len(parts) == 5:
             listed[parts[0]] = [float(v) for v in parts[1:]]
-    for pen, is_hidden in layer_keys:
-        if f"layer-{pen}{'-hidden' if is_hidden else ''}" not in listed:
+    for pen, is_hidden, level in layer_keys:
+        if f"layer-{pen}{'-hidden' if is_hidden else ''}{f'-{level}' if level else ''}" not in listed:
             fail(f"Inkscape does not list the layer of pen {pen}")
-    for index, (_, is_hidden, points, width) in paths.items():
+    for index, (_, is_hidden, points, width, _) in paths.items():
         box = listed.get(f"s{index}")
         if box is None:
             fail(f"Inkscape does not list path s{index}")

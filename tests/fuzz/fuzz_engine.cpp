@@ -146,7 +146,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     if (!plausible(s, scene, *camera, options)) std::abort();
 
   hlr::PagePlotOptions plot;
-  plot.include_hidden = options.include_hidden;
+  plot.hidden = options.include_hidden ? hlr::HiddenStyle::dashed() : hlr::HiddenStyle::off();
   static constexpr hlr::PenOrder kOrders[] = {hlr::PenOrder::None, hlr::PenOrder::Greedy,
                                               hlr::PenOrder::Optimized, hlr::PenOrder::Optimized};
   plot.plan.order = kOrders[flags >> 6];

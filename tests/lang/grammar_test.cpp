@@ -280,7 +280,7 @@ TEST(Grammar, Statements) {
       {"style hidden dashed", S},
       {"style hidden off", S},
       {"style dashed", G, "expected 'hidden' after 'style'"},
-      {"style hidden dotted", G, "expected 'dashed' or 'off'"},
+      {"style hidden dotted", G, "expected 'dashed', 'off' or 'levels N'"},
       {"include \"parts.hls\"", S},
       {"include parts", G, "expected a quoted file name after 'include'"},
       {"return", S},
@@ -340,9 +340,17 @@ TEST(Grammar, Pens) {
                             {"draw x pen", G, "expected a pen number after 'pen', as in 'draw box pen 2'"},
                             {"draw x pen 2 (colour: \"red\")", L},  // a draw, then a pen statement
                             {"draw x pen 2 ()", L}});
-  check_rows<g::style_stmt>({{"style hidden dashed pen 2", S},
-                             {"style hidden off pen 2", S},  // parses: the syntax check reports it
-                             {"style hidden dashed pen", G, "expected a pen number after 'pen'"}});
+  check_rows<g::style_stmt>(
+      {{"style hidden dashed pen 2", S},
+       {"style hidden off pen 2", S},  // parses: the syntax check reports it
+       {"style hidden dashed pen", G, "expected a pen number after 'pen'"},
+       {"style hidden levels 3", S},
+       {"style hidden levels n pen 2", S},
+       {"style hidden levels (k + 1) pen p", S},
+       {"style hidden levels -1", S},  // parses: the evaluator says the range
+       {"style hidden levels", G, "expected how many occlusion levels to draw after 'levels'"},
+       {"style hidden levels pen 2", G, "expected how many occlusion levels"},
+       {"style hidden levelsx", G, "expected 'dashed', 'off' or 'levels N'"}});
 }
 
 TEST(Grammar, Plotters) {
@@ -364,6 +372,8 @@ TEST(Grammar, DeviceWordsAreContextual) {
                          {"draw a pen 2\npen 3 (width: 1)", S},
                          {"draw a at t\npen (k) ()", S},
                          {"style hidden dashed\npen 1 (width: 0.2)", S},
+                         {"style hidden levels 2\npen 1 (width: 0.2)", S},
+                         {"let levels = 2 style hidden levels levels", S},
                          {"output \"x.hpgl\"\nplotter mine { pens: 2 }", S},
                          {"output \"x.hpgl\" plotter mine\nplotter mine { pens: 2 }", S},
                          {"let pen = 1 let plotter = 2 draw x pen pen + plotter", S},

@@ -388,6 +388,21 @@ TEST(Parser, Pens) {
   EXPECT_EQ(ast("draw box(1) pen k + 1"), "(draw (call box 1) pen (+ k 1))");
   EXPECT_EQ(ast("draw a pen f(i)"), "(draw a pen (call f i))");
   EXPECT_EQ(ast("style hidden dashed pen 2"), "(style hidden dashed pen 2)");
+  EXPECT_EQ(ast("style hidden levels 3"), "(style hidden levels 3)");
+  EXPECT_EQ(ast("style hidden levels n + 1 pen 4"), "(style hidden levels (+ n 1) pen 4)");
+  {
+    const std::string levels_text = "style hidden levels (n) pen 2";
+    const Script levels_script = parse_ok(levels_text);
+    const auto& style = std::get<StyleStmt>(levels_script.statements[0].node);
+    EXPECT_EQ(style.value.text, "levels");
+    ASSERT_TRUE(style.levels);
+    EXPECT_EQ(span_text(levels_text, style.levels->span), "n");  // (e) is e, as everywhere
+    ASSERT_TRUE(style.pen);
+    EXPECT_EQ(span_text(levels_text, style.pen->span), "pen 2");
+    EXPECT_FALSE(std::get<StyleStmt>(parse_ok("style hidden dashed").statements[0].node).levels);
+  }
+  EXPECT_EQ(dump(parse_ok("style hidden levels 2\npen 1 (width: 0.2)")),
+            "(style hidden levels 2)\n(pen 1 (options width:0.2))\n");
   const std::string text = "draw a pen 2";
   const Script script = parse_ok(text);
   const auto& draw = std::get<DrawStmt>(script.statements[0].node);

@@ -111,7 +111,8 @@ void draw_page(cairo_t* cr, const PlotPage& page, const CairoOptions& o, double 
 
   const Rect2 box = stroke_clip_box(page, o.pens);
   for_each_pen_run(
-      page, o.pens, [&](const PenStyle& style, StrokeLayer layer, std::size_t first, std::size_t end) {
+      page, o.pens,
+      [&](const PenStyle& style, StrokeLayer layer, int level, std::size_t first, std::size_t end) {
         set_grey_or_colour(cr, style.r, style.g, style.b, ink);
         // cairo's 4 × 4-sample coverage takes a third of the time of its 256 levels
         // (bench/README.md, "PNG"); on a line a pixel wide or more no eye tells them
@@ -121,7 +122,7 @@ void draw_page(cairo_t* cr, const PlotPage& page, const CairoOptions& o, double 
                                     : CAIRO_ANTIALIAS_DEFAULT);
         cairo_set_line_width(cr, style.width_mm);
         if (layer == StrokeLayer::Hidden) {
-          const double dash[] = {dash_on_mm(style.width_mm), dash_off_mm(style.width_mm)};
+          const double dash[] = {dash_on_mm(style.width_mm, level), dash_off_mm(style.width_mm, level)};
           cairo_set_dash(cr, dash, 2, 0);
         } else {
           cairo_set_dash(cr, nullptr, 0, 0);

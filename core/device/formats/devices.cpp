@@ -232,7 +232,8 @@ class JsonDevice : public Device {
   DevicePlanning planning(double, double) const override { return page_planning(); }
   EncodedFrame encode(const DeviceFrame& frame) const override {
     JsonOptions o = o_;
-    o.include_hidden = o_.include_hidden || frame.include_hidden;
+    o.include_hidden = o_.include_hidden || frame.hidden.drawn();
+    o.levels = o.levels || frame.hidden.counts_levels();
     const JsonFrame f{frame.frame,     frame.time,          *frame.camera,
                       *frame.segments, *frame.object_names, frame.plot};
     EncodedFrame out;

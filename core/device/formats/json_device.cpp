@@ -141,6 +141,10 @@ class FrameText {
         strokes(StrokeLayer::Hidden, indent);
         w_.member("hidden_stroke_pens", indent, false);
         pens(StrokeLayer::Hidden);
+        if (o_.levels) {
+          w_.member("hidden_stroke_levels", indent, false);
+          levels();
+        }
       }
     }
     if (o_.parts.stats) {
@@ -255,7 +259,12 @@ class FrameText {
         out += ",\"edge\":";
         w_.integer(s.edge);
       }
-      out += s.hidden ? ",\"hidden\":true}" : ",\"hidden\":false}";
+      out += s.hidden ? ",\"hidden\":true" : ",\"hidden\":false";
+      if (s.hidden && o_.levels) {
+        out += ",\"level\":";
+        w_.integer(s.level);
+      }
+      out += '}';
     }
     if (!first) w_.line(indent);
     out += ']';
@@ -290,6 +299,20 @@ class FrameText {
       if (!first) out += ',';
       first = false;
       w_.integer(stroke.pen);
+    }
+    out += ']';
+  }
+
+  // The occlusion level of each hidden stroke, parallel to hidden_strokes.
+  void levels() {
+    std::string& out = w_.out();
+    out += '[';
+    bool first = true;
+    for (const PlotStroke& stroke : f_.plot.page.strokes) {
+      if (stroke.layer != StrokeLayer::Hidden) continue;
+      if (!first) out += ',';
+      first = false;
+      w_.integer(stroke.level);
     }
     out += ']';
   }

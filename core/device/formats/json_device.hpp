@@ -10,10 +10,11 @@
 //                           "view_from_world": {"m": [[..],[..],[..]], "t": [..]}},
 //                "layout": {"mm_per_unit": s, "origin_mm": [x,y]},
 //                "segments": [{"p": [[x,y,z],[x,y,z]], "s": [[u,v],[u,v]], "object": "name",
-//                              "edge": i | "other": "name", "hidden": false}],
+//                              "edge": i | "other": "name", "hidden": false, "level": k (hidden, levels)}],
 //                "strokes": [[[x_mm,y_mm], ...], ...],
 //                "stroke_pens": [1, ...] (the pen of each stroke),
 //                "hidden_strokes": [...], "hidden_stroke_pens": [...] (only with include_hidden),
+//                "hidden_stroke_levels": [1, ...] (only with levels),
 //                "stats": {"segments": n, "pen_down_mm": d, "pen_up_mm": u, "pen_up_mean_mm": m,
 //                          "pen_up_median_mm": md, "lifts": k, "lift_lower_bound": b,
 //                          "plot_seconds": t, "pen_order": "optimized"}}]}
@@ -28,7 +29,10 @@
 // eye). view_from_world maps world to (right, up, depth) as view = m·p + t; picture = focal·(right,
 // up)/depth + offset (perspective) or focal·(right, up) + offset (orthographic).
 // segments: pieces from an edge carry its index in the object's edge list; intersection lines carry
-// the other object's name instead. Hidden pieces appear only with include_hidden.
+// the other object's name instead. Hidden pieces appear only with include_hidden. With levels (hidden
+// lines drawn by occlusion level, `style hidden levels N`) each hidden segment carries "level": k, the
+// number of surfaces in front of it (1..N), and "hidden_stroke_levels" the level of each hidden stroke;
+// without, neither member is written (the document is as before levels existed).
 // strokes: the plot's visible-layer strokes (pen-planned by core/plan/pen_plan.hpp), in plotting order,
 // with stroke_pens the pen of each; hidden_strokes and hidden_stroke_pens the hidden layer's, likewise.
 // The device neither reorders nor joins them. The plan draws pen by pen, visible before hidden within a
@@ -81,6 +85,7 @@ std::optional<JsonParts> parse_json_parts(std::string_view list);
 
 struct JsonOptions {
   bool include_hidden = false;          // list hidden segments and hidden_strokes
+  bool levels = false;                  // with include_hidden: their occlusion levels too
   std::string pen_order = "optimized";  // reported in stats
   std::string title;                    // omitted when empty
   // true: indented, one segment or stroke per line; false: a single line without spaces.

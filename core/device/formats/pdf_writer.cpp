@@ -169,26 +169,27 @@ PdfPage make_pdf_page(const PlotPage& page, const PdfOptions& o) {
   }
 
   const Rect2 box = stroke_clip_box(page, o.pens);
-  for_each_pen_run(page, o.pens,
-                   [&](const PenStyle& style, StrokeLayer layer, std::size_t first, std::size_t end) {
-                     put_rgb(c, style.r, style.g, style.b);
-                     put_number(c, style.width_mm);
-                     c += " w\n";
-                     if (layer == StrokeLayer::Hidden) {
-                       c += '[';
-                       put_number(c, dash_on_mm(style.width_mm));
-                       c += ' ';
-                       put_number(c, dash_off_mm(style.width_mm));
-                       c += "] 0 d\n";
-                     } else {
-                       c += "[] 0 d\n";
-                     }
-                     for (std::size_t i = first; i < end; ++i)
-                       clip_polyline_to_rect(
-                           page.strokes[i].points, box, [&](Point2 p) { put_point(c, p, " m\n"); },
-                           [&](Point2 p) { put_point(c, p, " l\n"); });
-                     c += "S\n";
-                   });
+  for_each_pen_run(
+      page, o.pens,
+      [&](const PenStyle& style, StrokeLayer layer, int level, std::size_t first, std::size_t end) {
+        put_rgb(c, style.r, style.g, style.b);
+        put_number(c, style.width_mm);
+        c += " w\n";
+        if (layer == StrokeLayer::Hidden) {
+          c += '[';
+          put_number(c, dash_on_mm(style.width_mm, level));
+          c += ' ';
+          put_number(c, dash_off_mm(style.width_mm, level));
+          c += "] 0 d\n";
+        } else {
+          c += "[] 0 d\n";
+        }
+        for (std::size_t i = first; i < end; ++i)
+          clip_polyline_to_rect(
+              page.strokes[i].points, box, [&](Point2 p) { put_point(c, p, " m\n"); },
+              [&](Point2 p) { put_point(c, p, " l\n"); });
+        c += "S\n";
+      });
 
   if (o.decorations && !page.caption.empty()) {
     // In the bottom margin, so a caption never moves the drawing; the text matrix turns it upright.

@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <map>
 #include <string>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -63,9 +64,9 @@ std::string xml_text(const std::string& text) {
   return out;
 }
 
-// A layer: a pen and whether it holds that pen's hidden strokes. Visible layers come before hidden ones
-// of the same pen.
-using LayerKey = std::pair<int, bool>;
+// A layer: a pen, whether it holds that pen's hidden strokes, and their occlusion level (0: not counted).
+// Visible layers come before hidden ones of the same pen, hidden ones by level: the plan's order.
+using LayerKey = std::tuple<int, bool, int>;
 
 // The pieces of one stroke to draw: itself, or with `clip` the parts on the page.
 // `page` has a hair of slack for rounding in the layout; cuts are made at the page's exact edge, `cut`.
@@ -107,9 +108,9 @@ void append_path(std::string& out, const std::vector<Point2>& points, std::size_
 
 }  // namespace
 
-std::string plotter_svg_layer_label(int pen, const PenStyle& style, bool hidden) {
-  return std::to_string(pen) + " " +
-         (hidden ? std::string("hidden") : colour_text({style.r, style.g, style.b}));
+std::string plotter_svg_layer_label(int pen, const PenStyle& style, bool hidden, int level) {
+  if (hidden) return std::to_string(pen) + " hidden" + (level > 0 ? " " + std::to_string(level) : "");
+  return std::to_string(pen) + " " + colour_text({style.r, style.g, style.b});
 }
 
 std::string to_plotter_svg(const PlotPage& page, const PlotterSvgOptions& options) {
@@ -126,7 +127,8 @@ std::string to_plotter_svg(const PlotPage& page, const PlotterSvgOptions& option
   std::map<LayerKey, std::string> layers;
   for (std::size_t i = 0; i < page.strokes.size(); ++i) {
     const PlotStroke& stroke = page.strokes[i];
-    std::string& paths = layers[{stroke.pen, stroke.layer == StrokeLayer::Hidden}];
+    const bool hidden = stroke.layer == StrokeLayer::Hidden;
+    std::string& paths = layers[{stroke.pen, hidden, hidden ? stroke.level : 0}];
     const auto pieces = pieces_on_page(stroke, sheet, {0, 0, page.width_mm, page.height_mm}, options.clip, i);
     for (std::size_t k = 0; k < pieces.size(); ++k) append_path(paths, pieces[k], i, k);
   }
@@ -141,21 +143,23 @@ std::string to_plotter_svg(const PlotPage& page, const PlotterSvgOptions& option
          mm_text(page.width_mm) + " " + mm_text(page.height_mm) + "\">\n";
   if (!options.title.empty()) out += "  <title>" + xml_text(options.title) + "</title>\n";
   for (const auto& [key, paths] : layers) {
-    const auto [pen, hidden] = key;
+    const auto [pen, hidden, level] = key;
     const PenStyle style = options.pens.style(pen);
     // The digits, not a name: SVG's names differ from ours for some colours (CSS green is half green).
     char hex[8];
     const auto byte = [](double v) { return static_cast<unsigned>(std::lround(v * 255)); };
     std::snprintf(hex, sizeof hex, "#%02x%02x%02x", byte(style.r), byte(style.g), byte(style.b));
-    out += "  <g inkscape:groupmode=\"layer\" id=\"layer-" + std::to_string(pen) + (hidden ? "-hidden" : "") +
-           "\" inkscape:label=\"" + xml_text(plotter_svg_layer_label(pen, style, hidden)) +
-           "\" fill=\"none\" stroke=\"" + std::string(hex) + "\" stroke-width=\"" + mm_text(style.width_mm) +
+    const std::string id = std::to_string(pen) + (hidden ? "-hidden" : "") +
+                           (level > 0 ? "-" + std::to_string(level) : std::string());
+    out += "  <g inkscape:groupmode=\"layer\" id=\"layer-" + id + "\" inkscape:label=\"" +
+           xml_text(plotter_svg_layer_label(pen, style, hidden, level)) + "\" fill=\"none\" stroke=\"" +
+           std::string(hex) + "\" stroke-width=\"" + mm_text(style.width_mm) +
            "\" stroke-linecap=\"round\" stroke-linejoin=\"round\"";
     if (hidden) {
       out += " stroke-dasharray=\"";
-      append_mm(out, dash_on_mm(style.width_mm));
+      append_mm(out, dash_on_mm(style.width_mm, level));
       out += ' ';
-      append_mm(out, dash_off_mm(style.width_mm));
+      append_mm(out, dash_off_mm(style.width_mm, level));
       out += '"';
     }
     out += ">\n" + paths + "  </g>\n";

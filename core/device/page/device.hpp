@@ -29,7 +29,7 @@ struct DevicePlanning {
   Point2 home{0, 0};         // where the pen starts and ends, page mm
   PlotterSpeeds speeds;      // for the plotting-time estimate
   double min_margin_mm = 0;  // the pen reaches no closer to the sheet's edge: the layout keeps this margin
-  bool text_as_strokes = false;  // plotters draw the caption as single-stroke text (--text overrides)
+  bool text_as_strokes = false;   // plotters draw the caption as single-stroke text (--text overrides)
   bool hidden_as_dashes = false;  // plotters draw hidden strokes as planned pen-down dashes
 };
 
@@ -40,7 +40,7 @@ struct DeviceFrame {
   const Camera* camera = nullptr;
   const std::vector<VisibleSegment>* segments = nullptr;
   const std::vector<std::string>* object_names = nullptr;  // by VisibleSegment::object
-  bool include_hidden = false;
+  HiddenStyle hidden;  // JSON lists hidden pieces when drawn(), with their levels when counted
   PagePlot plot;
 };
 

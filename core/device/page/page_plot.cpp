@@ -69,17 +69,25 @@ PagePlot plot_page(const std::vector<VisibleSegment>& segments, const std::optio
     out.page.border = Rect2{a.x, a.y, b.x, b.y};
   }
   const int hidden_pen = o.hidden_pen ? checked_pen(*o.hidden_pen) : 0;  // 0: the object's pen
+  const bool by_level = o.hidden.counts_levels();
+  if (by_level) out.level_pieces.assign(static_cast<std::size_t>(o.hidden.levels) + 1, 0);
   std::vector<PlotPiece> pieces;
   pieces.reserve(segments.size());
   for (const VisibleSegment& s : segments) {
     if (!s.hidden) ++out.visible_segments;
-    if (s.hidden && !o.include_hidden) continue;
+    if (s.hidden && !o.hidden.drawn()) continue;
+    // By level: only the levels asked for (the engine returns no others; a piece without one is not ours).
+    const int level = s.hidden && by_level ? s.level : 0;
+    if (s.hidden && by_level && (level < 1 || level > o.hidden.levels)) continue;
     const int object_pen = s.object < o.object_pens.size() ? checked_pen(o.object_pens[s.object]) : 1;
     PlotPiece p;
     p.a = page_point(out.layout, s.s0);
     p.b = page_point(out.layout, s.s1);
-    p.pen = s.hidden && hidden_pen > 0 ? hidden_pen : object_pen;
+    // Level k in the k-th pen from the hidden pen: each level a pen of its own on a plotter.
+    p.pen = s.hidden && hidden_pen > 0 ? checked_pen(hidden_pen + std::max(level, 1) - 1) : object_pen;
     p.layer = s.hidden ? StrokeLayer::Hidden : StrokeLayer::Visible;
+    p.level = level;
+    if (level > 0) ++out.level_pieces[static_cast<std::size_t>(level)];
     pieces.push_back(p);
   }
   for (const PageText& text : o.texts)
@@ -89,7 +97,7 @@ PagePlot plot_page(const std::vector<VisibleSegment>& segments, const std::optio
     out.page.caption.clear();  // drawn: no device prints it again
   }
   PenPlan plan = plan_pen_strokes(pieces, o.plan);
-  if (o.hidden_dashes && o.include_hidden) dash_hidden_strokes(plan, *o.hidden_dashes, o.plan);
+  if (o.hidden_dashes && o.hidden.drawn()) dash_hidden_strokes(plan, *o.hidden_dashes, o.plan);
   out.page.strokes = std::move(plan.strokes);
   out.stats = plan.stats;
   return out;

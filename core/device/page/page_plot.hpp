@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "core/device/page/hidden_style.hpp"
 #include "core/device/page/page_layout.hpp"
 #include "core/device/page/plot_page.hpp"
 #include "core/geometry/rect2.hpp"
@@ -24,10 +25,14 @@ struct PageText {
 };
 
 struct PagePlotOptions {
-  PageSpec spec;                  // paper, margins, explicit scale
-  std::vector<int> object_pens;   // by VisibleSegment::object; objects past the end use pen 1
-  std::optional<int> hidden_pen;  // pen of hidden pieces; unset: the object's pen
-  bool include_hidden = false;    // hidden pieces are planned (and drawn) only when on
+  PageSpec spec;                 // paper, margins, explicit scale
+  std::vector<int> object_pens;  // by VisibleSegment::object; objects past the end use pen 1
+  // Pen of hidden pieces; unset: the object's pen. Drawn by occlusion level, level k is in pen
+  // hidden_pen + k − 1 (a pen past kMaxPen is a DeviceError).
+  std::optional<int> hidden_pen;
+  // Hidden pieces are planned (and drawn) only when hidden.drawn(); by level (Levels), those of levels
+  // 1..hidden.levels, each PlotPiece carrying its level; plain dashed ones at level 0.
+  HiddenStyle hidden;
   PlanOptions plan;
   // The caption as single-stroke text (core/device/page/stroke_text.hpp) in pen 1, planned with the drawing,
   // instead of a string the device prints (plotters, and --text stroke), in the bottom margin.
@@ -53,11 +58,13 @@ struct PagePlot {
   PageLayout layout;
   PlanStats stats;
   std::size_t visible_segments = 0;  // visible pieces given (before snapping and merging)
+  // Drawn by occlusion level: [k] the hidden pieces of level k given (index 0 unused); else empty.
+  std::vector<std::size_t> level_pieces;
 };
 
 // Fits the drawing (the camera frame when there is one, else the pieces) to the page, maps every piece
 // to page millimetres and plans the strokes. Throws DeviceError for a bad page, a non-finite coordinate or
-// a pen outside 1..255.
+// a pen outside 1..255 (a hidden level's pen included).
 PagePlot plot_page(const std::vector<VisibleSegment>& segments, const std::optional<Rect2>& frame,
                    std::string caption, const PagePlotOptions& options);
 

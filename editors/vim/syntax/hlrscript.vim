@@ -87,7 +87,7 @@ syn match hlrClause /\<\%(landscape\|portrait\)\>/
 syn match hlrClause /\<size\ze\s*:/
 syn match hlrFramesWord /\<frames\>/ contained
 syn match hlrStyleHidden /\<hidden\>/ contained nextgroup=hlrStyleValue skipwhite skipnl
-syn match hlrStyleValue /\<\%(dashed\|off\)\>/ contained
+syn match hlrStyleValue /\<\%(dashed\|off\|levels\)\>/ contained
 syn match hlrPaperSize /\<\w\+\>/ contained
 syn match hlrPageWord /\<page\>\ze\s*(/ contained
 

@@ -172,10 +172,10 @@ TEST(DeviceSettings, DrawPens) {
 
 TEST(DeviceSettings, HiddenPen) {
   const FrameScene dashed = test::run_ok("style hidden dashed pen 2");
-  EXPECT_EQ(dashed.hidden, true);
+  EXPECT_EQ(dashed.hidden, HiddenStyle::dashed());
   EXPECT_EQ(dashed.hidden_pen, 2);
   const FrameScene plain = test::run_ok("style hidden dashed");
-  EXPECT_EQ(plain.hidden, true);
+  EXPECT_EQ(plain.hidden, HiddenStyle::dashed());
   EXPECT_FALSE(plain.hidden_pen);
   EXPECT_FALSE(test::run_ok("style hidden off").hidden_pen);
 }
@@ -199,7 +199,7 @@ const Case kPenErrors[] = {
   {"draw cube(1) pen 0", "1:18: the pen number must be a whole number from 1 to 255, got 0"},
   {"draw cube(1) at translate(1, 0, 0) pen 2.5", "1:40: the pen number must be a whole number from 1 to 255, got 2.5"},
   {"style hidden dashed pen 300", "1:25: the pen number must be a whole number from 1 to 255, got 300"},
-  {"style hidden off pen 2", "1:18: a pen goes only with 'style hidden dashed'"},
+  {"style hidden off pen 2", "1:18: a pen goes only with 'style hidden dashed' or 'style hidden levels N'"},
 };
 // clang-format on
 

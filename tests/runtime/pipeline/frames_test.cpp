@@ -45,11 +45,11 @@ TEST(Frames, SettingsStatements) {
   ASSERT_TRUE(scene.paper);
   EXPECT_EQ(scene.paper->paper.width_mm, 297);
   EXPECT_EQ(scene.paper->paper.height_mm, 420);
-  EXPECT_EQ(scene.hidden, true);
+  EXPECT_EQ(scene.hidden, HiddenStyle::dashed());
   const FrameScene plain = test::run_ok("output \"x.pdf\"\npaper letter\nstyle hidden off");
   EXPECT_FALSE(plain.output->interpolated);
   EXPECT_GT(plain.paper->paper.width_mm, plain.paper->paper.height_mm);  // landscape unless portrait
-  EXPECT_EQ(plain.hidden, false);
+  EXPECT_EQ(plain.hidden, HiddenStyle::off());
   const FrameScene none = test::run_ok("draw cube(1)");
   EXPECT_FALSE(none.animation || none.output || none.paper || none.hidden);
 }
@@ -99,7 +99,7 @@ TEST(Frames, ParallelRunsGiveTheSerialResult) {
   ASSERT_EQ(b.frames.size(), 5U);
   for (std::size_t i = 0; i < 5; ++i) {
     EXPECT_EQ(a.frames[i].time.frame, static_cast<int>(i));
-    EXPECT_TRUE(a.frames[i].hidden);  // style hidden dashed
+    EXPECT_EQ(a.frames[i].hidden, HiddenStyle::dashed());  // style hidden dashed
     ASSERT_EQ(a.frames[i].kept_segments.size(), b.frames[i].kept_segments.size()) << i;
     EXPECT_GT(a.frames[i].kept_segments.size(), 0U);
     for (std::size_t s = 0; s < a.frames[i].kept_segments.size(); ++s) {

@@ -42,8 +42,11 @@ std::string random_input(hlr::test::Rng& rng) {
       return "draw cube(0.6) at translate(" + number(-3, 3) + ", -2, 0)";
     case 2:
       return "camera c = lookat(eye: (" + number(-6, 6) + ", -8, 4), target: (0, 0, 0.5), fov: 45)";
-    case 3:
-      return pick(2) ? "style hidden dashed" : "style hidden off";
+    case 3: {
+      const char* styles[] = {"style hidden dashed", "style hidden off", "style hidden levels 2",
+                              "style hidden levels 3 pen 2"};
+      return styles[pick(4)];
+    }
     case 4:
     case 5:
       return ":orbit " + number(-40, 40) + (pick(2) ? " " + number(-20, 20) : "");
@@ -55,8 +58,10 @@ std::string random_input(hlr::test::Rng& rng) {
       const char* names[] = {"", " a", " b", " c"};
       return std::string(":camera") + names[pick(4)];
     }
-    case 9:
-      return pick(2) ? ":hidden on" : ":hidden off";
+    case 9: {
+      const char* hidden[] = {":hidden on", ":hidden off", ":levels 2", ":levels 3"};
+      return hidden[pick(4)];
+    }
     case 10:
       return ":frame " + number(0, 2);
     default:

@@ -121,6 +121,46 @@ TEST(PlotterSvg, LayerLabelsNameTheColour) {
   EXPECT_EQ(plotter_svg_layer_label(4, default_pen_style(4), false), "4 blue");
   EXPECT_EQ(plotter_svg_layer_label(7, default_pen_style(7), false), "7 #cc9900");
   EXPECT_EQ(plotter_svg_layer_label(2, default_pen_style(2), true), "2 hidden");
+  EXPECT_EQ(plotter_svg_layer_label(2, default_pen_style(2), true, 3), "2 hidden 3");
+}
+
+// Hidden lines by occlusion level: a layer per pen and level, "N hidden K", after the pen's visible layer
+// and in level order (the plan's), each with its level's dash array (0.25 mm pens: dash − 0.25, gap +
+// 0.25: level 1 1.75 1.45, level 2 1.35 1.85, level 3 0.95 2.25).
+TEST(PlotterSvg, ALayerPerOcclusionLevel) {
+  const StrokeLayer V = StrokeLayer::Visible, H = StrokeLayer::Hidden;
+  const PlotPage page = page_of({{{{1, 1}, {2, 1}}, 1, V, 0},
+                                 {{{1, 2}, {2, 2}}, 1, H, 1},
+                                 {{{1, 3}, {2, 3}}, 1, H, 2},
+                                 {{{1, 4}, {2, 4}}, 1, H, 3},
+                                 {{{1, 5}, {2, 5}}, 2, H, 1}});
+  const std::string svg = to_plotter_svg(page, {});
+  const std::size_t v1 = svg.find("inkscape:label=\"1 black\""),
+                    h11 = svg.find("inkscape:label=\"1 hidden 1\""),
+                    h12 = svg.find("inkscape:label=\"1 hidden 2\""),
+                    h13 = svg.find("inkscape:label=\"1 hidden 3\""),
+                    h21 = svg.find("inkscape:label=\"2 hidden 1\"");
+  for (std::size_t at : {v1, h11, h12, h13, h21}) ASSERT_NE(at, std::string::npos) << svg;
+  EXPECT_LT(v1, h11);
+  EXPECT_LT(h11, h12);
+  EXPECT_LT(h12, h13);
+  EXPECT_LT(h13, h21);
+  EXPECT_EQ(count(svg, "inkscape:groupmode=\"layer\""), 5u);
+  EXPECT_EQ(svg.find("\"1 hidden\""), std::string::npos);  // no plain hidden layer
+  EXPECT_NE(svg.find("id=\"layer-1-hidden-2\""), std::string::npos) << svg;
+  // Each layer's dash array is its level's; s2 (level 2) sits in the level-2 layer.
+  const std::size_t d1 = svg.find("stroke-dasharray=\"1.75 1.45\""),
+                    d2 = svg.find("stroke-dasharray=\"1.35 1.85\""),
+                    d3 = svg.find("stroke-dasharray=\"0.95 2.25\"");
+  ASSERT_NE(d1, std::string::npos) << svg;
+  ASSERT_NE(d2, std::string::npos) << svg;
+  ASSERT_NE(d3, std::string::npos) << svg;
+  EXPECT_GT(d2, h12);
+  EXPECT_LT(d2, h13);
+  EXPECT_EQ(count(svg, "stroke-dasharray=\"1.75 1.45\""), 2u);  // level 1 of pens 1 and 2
+  const std::size_t s2 = svg.find("id=\"s2\"");
+  EXPECT_GT(s2, h12);
+  EXPECT_LT(s2, h13);
 }
 
 }  // namespace
