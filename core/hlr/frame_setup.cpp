@@ -6,6 +6,7 @@
 #include "core/geometry/box3.hpp"
 #include "core/geometry/exact_predicates.hpp"
 #include "core/hlr/intersection_lines.hpp"
+#include "core/hlr/smooth_contours.hpp"
 #include "core/parallel.hpp"
 #include "core/tolerance.hpp"
 
@@ -225,7 +226,7 @@ void add_edge_candidates(FrameSetup& part, std::uint32_t o, const Solid& solid,
       case EdgeKind::Flat:
         continue;
       case EdgeKind::Smooth:
-        if ((fl > 0) == (fr > 0)) continue;  // not on the contour
+        if ((fl > 0) == (fr > 0) || solid.smooth_contours) continue;  // not on the (polyhedral) contour
         [[fallthrough]];
       case EdgeKind::Feature: {
         const int front = (fl > 0) + (fr > 0);
@@ -333,6 +334,10 @@ FrameSetup prepare_frame(const Scene& scene, const Camera& camera, bool keep_cul
   if (levels) keep_culled = true;
   const std::vector<char> meets_other = levels ? boxes_meeting_others(scene, ltol) : std::vector<char>(n, 0);
   std::vector<std::vector<Point3>> sliced_view(n);  // view-space vertices of the sliced objects
+  // The corner normals of the solids drawn with smooth contours (each solid's, kept with it).
+  parallel_chunks(n, threads_for(n, 1, threads), [&](std::size_t o) {
+    if (scene.objects[o].solid->smooth_contours) scene.objects[o].solid->corner_normals();
+  });
   struct Job {
     std::size_t object_begin, object_end;  // whole objects; or one sliced object:
     std::size_t face_begin = 0, face_end = 0, edge_begin = 0, edge_end = 0;
@@ -395,12 +400,18 @@ FrameSetup prepare_frame(const Scene& scene, const Camera& camera, bool keep_cul
                         job.face_end);
           add_edge_candidates(part, index, solid, sliced_view[o], facing[o], cull[o], keep_culled,
                               job.edge_begin, job.edge_end);
+          if (solid.smooth_contours)
+            add_contour_candidates(part.candidates, index, solid, solid.corner_normals(), camera,
+                                   job.face_begin, job.face_end);
           continue;
         }
         view_object(o, 1, 1, view_vertices);
         add_occluders(part, index, solid, view_vertices, facing[o], cull[o], camera, 0, solid.faces.size());
         add_edge_candidates(part, index, solid, view_vertices, facing[o], cull[o], keep_culled, 0,
                             solid.edges.size());
+        if (solid.smooth_contours)
+          add_contour_candidates(part.candidates, index, solid, solid.corner_normals(), camera, 0,
+                                 solid.faces.size());
       }
       clip_and_project(part, 0, camera, ltol);
       for (Occluder& occ : part.occluders) {

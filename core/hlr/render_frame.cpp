@@ -13,6 +13,7 @@
 #include "core/hlr/frame_setup.hpp"
 #include "core/hlr/occlusion.hpp"
 #include "core/hlr/occlusion_levels.hpp"
+#include "core/hlr/smooth_contours.hpp"
 #include "core/parallel.hpp"
 
 namespace hlr {
@@ -35,7 +36,10 @@ bool clip_to_frame(Candidate& c, const Camera& camera) {
   return true;
 }
 
-bool is_own_face(const Candidate& c, const Occluder& o) {
+bool is_own_face(const FrameSetup& setup, const Candidate& c, const Occluder& o) {
+  if (c.source == SegmentSource::Contour)  // its own face and those near it (smooth_contours.hpp)
+    return o.object == c.object &&
+           near_contour_face(*setup.scene->objects[c.object].solid, c.own_face0, o.face);
   return (o.object == c.own_object0() && o.face == c.own_face0) ||
          (o.object == c.own_object1() && o.face == c.own_face1);
 }
@@ -101,7 +105,7 @@ struct Worker {
     std::size_t kept = 0;
     for (const std::uint32_t id : near) {
       const Occluder& o = setup.occluders[id];
-      if (o.min_depth >= max_depth || !o.bounds.overlaps(box) || is_own_face(c, o)) continue;
+      if (o.min_depth >= max_depth || !o.bounds.overlaps(box) || is_own_face(setup, c, o)) continue;
       __builtin_prefetch(&setup.polygon_points[o.first_point]);
       __builtin_prefetch(&setup.ring_ends[o.first_ring]);
       near[kept++] = id;

@@ -11,6 +11,7 @@ namespace hlr {
 enum class SegmentSource : std::uint8_t {
   Edge,          // a piece of SolidEdge `edge` of object `object`
   Intersection,  // a piece of the line where two solids' faces cross (objects `object` and `other`)
+  Contour,       // a piece of the smooth contour on face `edge` of object `object` (Solid::smooth_contours)
 };
 
 struct VisibleSegment {

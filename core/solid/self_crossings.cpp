@@ -558,37 +558,10 @@ std::vector<SelfCrossing> find_self_crossings(const Solid& solid) {
   return found;
 }
 
-const std::vector<SelfCrossing> kNone;
-
 }  // namespace
 
-SelfCrossingCache& SelfCrossingCache::operator=(const SelfCrossingCache&) {
-  const auto* old = found_.exchange(nullptr);
-  if (old != &kNone) delete old;
-  return *this;
-}
-
-SelfCrossingCache& SelfCrossingCache::operator=(SelfCrossingCache&& other) noexcept {
-  const auto* old = found_.exchange(other.found_.exchange(nullptr));
-  if (old != &kNone) delete old;
-  return *this;
-}
-
-SelfCrossingCache::~SelfCrossingCache() {
-  const auto* old = found_.load();
-  if (old != &kNone) delete old;
-}
-
-const std::vector<SelfCrossing>& SelfCrossingCache::get(const Solid& solid) const {
-  if (const auto* found = found_.load(std::memory_order_acquire)) return *found;
-  // Two threads may both compute; the result does not depend on which one's copy is kept.
-  std::vector<SelfCrossing> crossings = find_self_crossings(solid);
-  const std::vector<SelfCrossing>* mine =
-      crossings.empty() ? &kNone : new std::vector<SelfCrossing>(std::move(crossings));
-  const std::vector<SelfCrossing>* expected = nullptr;
-  if (found_.compare_exchange_strong(expected, mine, std::memory_order_acq_rel)) return *mine;
-  if (mine != &kNone) delete mine;
-  return *expected;
+const std::vector<SelfCrossing>& Solid::self_crossings() const {
+  return self_crossing_cache.get([this] { return find_self_crossings(*this); });
 }
 
 }  // namespace hlr

@@ -56,6 +56,7 @@ Solid Solid::transformed(const Affine3& worldFromObject) const {
   out.closed = closed;
   out.folded = folded;
   out.crease_angle_deg = crease_angle_deg;
+  out.smooth_contours = smooth_contours;
   out.vertices.reserve(vertices.size());
   for (const Point3& p : vertices) out.vertices.push_back(worldFromObject.apply(p));
 

@@ -12,6 +12,7 @@
 #include "core/geometry/affine3.hpp"
 #include "core/geometry/vector.hpp"
 #include "core/small_vector.hpp"
+#include "core/solid/solid_cache.hpp"
 
 namespace hlr {
 
@@ -71,23 +72,13 @@ struct SelfCrossing {
   FaceIndex face0 = kNoFace, face1 = kNoFace;  // face0 < face1
 };
 
-struct Solid;
-
-// A solid's self-crossings, found the first time they are asked for and kept with the solid (solids are
-// immutable and shared between frames, so a static mesh pays once). Thread-safe; a copy of a solid starts
-// without them, so code that copies a solid and edits the copy never sees stale ones.
-class SelfCrossingCache {
- public:
-  SelfCrossingCache() = default;
-  SelfCrossingCache(const SelfCrossingCache&) {}
-  SelfCrossingCache& operator=(const SelfCrossingCache&);
-  SelfCrossingCache(SelfCrossingCache&& other) noexcept : found_(other.found_.exchange(nullptr)) {}
-  SelfCrossingCache& operator=(SelfCrossingCache&& other) noexcept;
-  ~SelfCrossingCache();
-  const std::vector<SelfCrossing>& get(const Solid& solid) const;
-
- private:
-  mutable std::atomic<const std::vector<SelfCrossing>*> found_{nullptr};
+// Unit normals at the corners of each face's outer ring, each the angle-weighted mean of the face normals
+// round its vertex across smooth and flat edges (a crease keeps a normal a side): the normals of the smooth
+// surface the mesh stands for (core/solid/corner_normals.cpp; smooth contours, core/hlr/smooth_contours.hpp).
+struct CornerNormals {
+  std::vector<std::uint32_t>
+      first;                     // per face, the index of its outer ring's first corner; one more at the end
+  std::vector<Vector3> normals;  // per corner, in ring order
 };
 
 struct Solid {
@@ -104,14 +95,20 @@ struct Solid {
   // are not culled.
   bool folded = false;
   double crease_angle_deg = 0;  // the crease angle the edge kinds were classified with
+  // It stands for a smooth surface: its outline is drawn as that surface's contour, interpolated across its
+  // faces (core/hlr/smooth_contours.hpp), instead of as its Smooth edges on the contour.
+  bool smooth_contours = false;
 
-  SelfCrossingCache self_crossing_cache;
+  SolidCache<std::vector<SelfCrossing>> self_crossing_cache;
+  SolidCache<CornerNormals> corner_normal_cache;
 
   // This solid moved by `worldFromObject` (any invertible affine map; a mirror keeps faces outward).
   Solid transformed(const Affine3& worldFromObject) const;
 
   // Where faces of this solid cross each other (core/solid/self_crossings.cpp), sorted by faces.
-  const std::vector<SelfCrossing>& self_crossings() const { return self_crossing_cache.get(*this); }
+  const std::vector<SelfCrossing>& self_crossings() const;
+  // Its corner normals (core/solid/corner_normals.cpp), computed once.
+  const CornerNormals& corner_normals() const;
 };
 
 // Fills Ring::edges of every face from Solid::edges (the builder and transformed() call it).

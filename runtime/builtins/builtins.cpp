@@ -128,6 +128,19 @@ void for_each_sublist(const CallArgs& call, const Bound& b, std::size_t i, std::
   }
 }
 
+Param contours_param() { return optional("contours", kinds(ValueKind::String), Value::string("edges")); }
+
+bool smooth_contours(const Bound& b, std::size_t i) {
+  const std::string& v = b.value(i).as_string();
+  if (v != "smooth" && v != "edges") b.fail(i, "must be \"smooth\" or \"edges\" (got \"" + v + "\")");
+  return v == "smooth";
+}
+
+Solid with_contours(Solid solid, bool smooth) {
+  solid.smooth_contours = smooth;
+  return solid;
+}
+
 double crease_angle(const Bound& b, std::size_t i) {
   const double deg = b.number(i);
   if (!(deg >= 0 && deg <= 180))

@@ -69,6 +69,13 @@ Value finite_vector(const CallArgs& call, Vector3 v);
 // else an error at the argument.
 Param crease_param(double fallback = 30);
 double crease_angle(const Bound& b, std::size_t i);
+// The optional `contours:` parameter of the curved generators and import: "edges" (the default: the
+// outline is made of the mesh's edges) or "smooth" (the interpolated contour of the smooth surface the mesh
+// stands for, Solid::smooth_contours); anything else is an error at the argument.
+Param contours_param();
+bool smooth_contours(const Bound& b, std::size_t i);
+// `solid` marked to be drawn with smooth contours when `smooth`.
+Solid with_contours(Solid solid, bool smooth);
 
 // Visits the items of list argument `i` (named `param` in messages), each of which must itself be a list:
 // each is bound as a one-argument call so the typed accessors check it (`visit(one, k)` reads it as

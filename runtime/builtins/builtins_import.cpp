@@ -1,6 +1,7 @@
-// import("mesh.off", crease: 0): a solid from a mesh file (OFF, OBJ, STL, Albers' .VER/.SUR), its path
-// relative to the script that names it. The script runs once per frame, so meshes are cached for the
-// process by resolved path, crease angle, size and modification time: an animation reads each file once.
+// import("mesh.off", crease: 0, contours: "edges"): a solid from a mesh file (OFF, OBJ, STL, Albers'
+// .VER/.SUR), its path relative to the script that names it. The script runs once per frame, so meshes are
+// cached for the process by resolved path, crease angle, contours, size and modification time: an animation
+// reads each file once.
 #include <chrono>
 #include <filesystem>
 #include <map>
@@ -26,7 +27,7 @@ struct CachedMesh {
   std::vector<stdlib::MeshProblem> warnings;
 };
 
-using CacheKey = std::tuple<std::string, double, std::uintmax_t, fs::file_time_type::rep>;
+using CacheKey = std::tuple<std::string, double, bool, std::uintmax_t, fs::file_time_type::rep>;
 
 std::mutex cache_mutex;
 std::map<CacheKey, CachedMesh> cache;
@@ -58,7 +59,8 @@ std::string problem_text(const stdlib::MeshProblem& p, const fs::path& resolved,
 }
 
 const ParamList kImportParams = {required("path", kinds(ValueKind::String)),
-                                 optional("crease", kinds(ValueKind::Number), Value::number(0))};
+                                 optional("crease", kinds(ValueKind::Number), Value::number(0)),
+                                 contours_param()};
 
 Value import_(CallArgs& call) {
   const Bound b = call.bind(kImportParams);
@@ -66,6 +68,7 @@ Value import_(CallArgs& call) {
   const double crease = b.number(1);
   if (!(crease >= 0 && crease <= 180))
     b.fail(1, "must be between 0 and 180 degrees (got " + format_for_message(crease) + ")");
+  const bool smooth = smooth_contours(b, 2);
   if (written.empty()) b.fail(0, "is empty; name a mesh file such as \"part.off\"");
 
   fs::path path(written);
@@ -83,7 +86,7 @@ Value import_(CallArgs& call) {
         "paths are relative to the script that names them", ErrorKind::Input);
   const std::uintmax_t size = fs::is_regular_file(status) ? fs::file_size(path, ec) : 0;
   const auto mtime = fs::last_write_time(path, ec).time_since_epoch().count();
-  const CacheKey key{fs::weakly_canonical(path, ec).string(), crease, size, mtime};
+  const CacheKey key{fs::weakly_canonical(path, ec).string(), crease, smooth, size, mtime};
   call.note_input(std::get<0>(key));
 
   CachedMesh mesh;
@@ -99,6 +102,7 @@ Value import_(CallArgs& call) {
       options.crease_angle_deg = crease;
       options.max_faces = call.budget().limits().faces;
       stdlib::ImportedMesh imported = stdlib::import_mesh(path, options);
+      imported.solid.smooth_contours = smooth;
       mesh.solid = std::make_shared<const Solid>(std::move(imported.solid));
       mesh.warnings = std::move(imported.warnings);
     } catch (const stdlib::MeshImportError& e) {
@@ -131,7 +135,7 @@ Value import_(CallArgs& call) {
 
 const BuiltinEntry kImportBuiltins[] = {
     {"import",
-     "import(path, crease: 0)",
+     "import(path, crease: 0, contours: \"edges\")",
      import_,
      "A solid read from a mesh file (OFF, OBJ, STL, Albers' .VER/.SUR), its path relative to the script.",
      {&kImportParams}},

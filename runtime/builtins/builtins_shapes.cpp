@@ -67,9 +67,12 @@ Value platonic_(CallArgs& call) {
   return generated_solid(call, 20, [&] { return Make(r); });
 }
 
-const ParamList kConeParams = {required("r", kNumber), required("h", kNumber),
+const ParamList kConeParams = {required("r", kNumber),
+                               required("h", kNumber),
                                optional("top", kNumber, Value::number(0)),
-                               optional("sides", kNumber, Value::number(32)), crease_param()};
+                               optional("sides", kNumber, Value::number(32)),
+                               crease_param(),
+                               contours_param()};
 
 Value cone_(CallArgs& call) {
   const Bound b = call.bind(kConeParams);
@@ -77,8 +80,9 @@ Value cone_(CallArgs& call) {
   if (r == 0 && top == 0) b.fail(0, "and top cannot both be 0");
   const int sides = b.whole(3, 3, kMaxCount);
   const double deg = crease_angle(b, 4);
+  const bool smooth = smooth_contours(b, 5);
   return generated_solid(call, static_cast<std::size_t>(sides) + 2,
-                         [&] { return stdlib::cone(r, h, top, sides, deg); });
+                         [&] { return with_contours(stdlib::cone(r, h, top, sides, deg), smooth); });
 }
 
 const ParamList kExtrudeParams = {required("outline", kList), required("v", kVector),
@@ -97,9 +101,9 @@ Value extrude_(CallArgs& call) {
   return generated_solid(call, faces, [&] { return stdlib::extrude(outline, v, holes); });
 }
 
-const ParamList kRevolveParams = {required("profile", kList),
-                                  optional("segments", kNumber, Value::number(32)),
-                                  optional("angle", kNumber, Value::number(360)), crease_param()};
+const ParamList kRevolveParams = {
+    required("profile", kList), optional("segments", kNumber, Value::number(32)),
+    optional("angle", kNumber, Value::number(360)), crease_param(), contours_param()};
 
 Value revolve_(CallArgs& call) {
   const Bound b = call.bind(kRevolveParams);
@@ -107,24 +111,32 @@ Value revolve_(CallArgs& call) {
   const int segments = b.whole(1, 1, kMaxCount);
   const double angle = b.positive(2);
   const double deg = crease_angle(b, 3);
+  const bool smooth = smooth_contours(b, 4);
   const std::size_t faces = static_cast<std::size_t>(segments) * profile.size() + 2;
-  return generated_solid(call, faces, [&] { return stdlib::revolve(profile, segments, angle, deg); });
+  return generated_solid(
+      call, faces, [&] { return with_contours(stdlib::revolve(profile, segments, angle, deg), smooth); });
 }
 
-const ParamList kSweepParams = {required("profile", kList), required("path", kList), crease_param()};
+const ParamList kSweepParams = {required("profile", kList), required("path", kList), crease_param(),
+                                contours_param()};
 
 Value sweep_(CallArgs& call) {
   const Bound b = call.bind(kSweepParams);
   const std::vector<Point2> profile = plane_points_arg(b, 0, 3, 2);
   const std::vector<Point3> path = points_arg(b, 1, 2);
   const double deg = crease_angle(b, 2);
+  const bool smooth = smooth_contours(b, 3);
   const std::size_t faces = profile.size() * path.size() + 2;
-  return generated_solid(call, faces, [&] { return stdlib::sweep(profile, path, deg); });
+  return generated_solid(call, faces,
+                         [&] { return with_contours(stdlib::sweep(profile, path, deg), smooth); });
 }
 
-const ParamList kHeightfieldParams = {required("values", kList), optional("dx", kNumber, Value::number(1)),
-                                      optional("dy", kNumber, Value::number(1)), optional("base", kNumber),
-                                      crease_param()};
+const ParamList kHeightfieldParams = {required("values", kList),
+                                      optional("dx", kNumber, Value::number(1)),
+                                      optional("dy", kNumber, Value::number(1)),
+                                      optional("base", kNumber),
+                                      crease_param(),
+                                      contours_param()};
 
 Value heightfield_(CallArgs& call) {
   const Bound b = call.bind(kHeightfieldParams);
@@ -137,7 +149,9 @@ Value heightfield_(CallArgs& call) {
   const double dx = b.positive(1), dy = b.positive(2);
   const std::optional<double> base = b.present(3) ? std::optional<double>(b.number(3)) : std::nullopt;
   const double deg = crease_angle(b, 4);
-  return generated_solid(call, 2 * cells + 5, [&] { return stdlib::heightfield(rows, dx, dy, base, deg); });
+  const bool smooth = smooth_contours(b, 5);
+  return generated_solid(call, 2 * cells + 5,
+                         [&] { return with_contours(stdlib::heightfield(rows, dx, dy, base, deg), smooth); });
 }
 
 const BuiltinEntry kShapeBuiltins[] = {
@@ -172,7 +186,7 @@ const BuiltinEntry kShapeBuiltins[] = {
      "The regular icosahedron of circumradius r centred on the origin.",
      {&kPlatonicParams}},
     {"cone",
-     "cone(r, h, top: 0, sides: 32, crease: 30)",
+     "cone(r, h, top: 0, sides: 32, crease: 30, contours: \"edges\")",
      cone_,
      "A cone of base radius r and height h on the origin, or a frustum when the top radius is not 0.",
      {&kConeParams}},
@@ -182,17 +196,17 @@ const BuiltinEntry kShapeBuiltins[] = {
      "A planar outline of points, with optional holes, swept along the vector v.",
      {&kExtrudeParams}},
     {"revolve",
-     "revolve(profile, segments: 32, angle: 360, crease: 30)",
+     "revolve(profile, segments: 32, angle: 360, crease: 30, contours: \"edges\")",
      revolve_,
      "A profile of (r, 0, z) points turned about the z axis by angle degrees in segments steps.",
      {&kRevolveParams}},
     {"sweep",
-     "sweep(profile, path, crease: 30)",
+     "sweep(profile, path, crease: 30, contours: \"edges\")",
      sweep_,
      "An xy-plane profile swept along a polyline path with mitred joints.",
      {&kSweepParams}},
     {"heightfield",
-     "heightfield(values, dx: 1, dy: 1, base: none, crease: 30)",
+     "heightfield(values, dx: 1, dy: 1, base: none, crease: 30, contours: \"edges\")",
      heightfield_,
      "A terrain from rows of heights on a dx by dy grid: a surface, or a closed block down to base.",
      {&kHeightfieldParams}},

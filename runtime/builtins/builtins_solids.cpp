@@ -84,34 +84,41 @@ Value prism_(CallArgs& call) {
 }
 
 const ParamList kCylinderParams = {required("r", kNumber), required("h", kNumber),
-                                   optional("sides", kNumber, Value::number(32)), crease_param()};
+                                   optional("sides", kNumber, Value::number(32)), crease_param(),
+                                   contours_param()};
 
 Value cylinder_(CallArgs& call) {
   const Bound b = call.bind(kCylinderParams);
   const double r = b.positive(0), h = b.positive(1);
   const int sides = b.whole(2, 3, kMaxCount);
   const double deg = crease_angle(b, 3);
+  const bool smooth = smooth_contours(b, 4);
   return generated_solid(call, static_cast<std::size_t>(sides) + 2, [&] {
-    return stdlib::cylinder({0, 0, 0}, r, h, sides, deg);
+    return with_contours(stdlib::cylinder({0, 0, 0}, r, h, sides, deg), smooth);
   });
 }
 
 const ParamList kSphereParams = {required("r", kNumber), optional("slices", kNumber, Value::number(32)),
-                                 optional("stacks", kNumber, Value::number(16)), crease_param()};
+                                 optional("stacks", kNumber, Value::number(16)), crease_param(),
+                                 contours_param()};
 
 Value sphere_(CallArgs& call) {
   const Bound b = call.bind(kSphereParams);
   const double r = b.positive(0);
   const int slices = b.whole(1, 3, kMaxCount), stacks = b.whole(2, 2, kMaxCount);
   const double deg = crease_angle(b, 3);
+  const bool smooth = smooth_contours(b, 4);
   return generated_solid(call, static_cast<std::size_t>(slices) * static_cast<std::size_t>(stacks), [&] {
-    return stdlib::sphere({0, 0, 0}, r, slices, stacks, deg);
+    return with_contours(stdlib::sphere({0, 0, 0}, r, slices, stacks, deg), smooth);
   });
 }
 
-const ParamList kTorusParams = {required("R", kNumber), required("r", kNumber),
+const ParamList kTorusParams = {required("R", kNumber),
+                                required("r", kNumber),
                                 optional("major", kNumber, Value::number(48)),
-                                optional("minor", kNumber, Value::number(24)), crease_param()};
+                                optional("minor", kNumber, Value::number(24)),
+                                crease_param(),
+                                contours_param()};
 
 Value torus_(CallArgs& call) {
   const Bound b = call.bind(kTorusParams);
@@ -120,8 +127,9 @@ Value torus_(CallArgs& call) {
     b.fail(1, "must be below R (" + format_for_message(big) + "), got " + format_for_message(small));
   const int major = b.whole(2, 3, kMaxCount), minor = b.whole(3, 3, kMaxCount);
   const double deg = crease_angle(b, 4);
+  const bool smooth = smooth_contours(b, 5);
   return generated_solid(call, static_cast<std::size_t>(major) * static_cast<std::size_t>(minor), [&] {
-    return stdlib::torus({0, 0, 0}, big, small, major, minor, deg);
+    return with_contours(stdlib::torus({0, 0, 0}, big, small, major, minor, deg), smooth);
   });
 }
 
@@ -172,17 +180,17 @@ const BuiltinEntry kSolidBuiltins[] = {
      "An xy-plane outline, with optional holes, extruded from z = 0 up to height h.",
      {&kPrismParams}},
     {"cylinder",
-     "cylinder(r, h, sides: 32, crease: 30)",
+     "cylinder(r, h, sides: 32, crease: 30, contours: \"edges\")",
      cylinder_,
      "A cylinder of radius r and height h standing on the origin, its side made of sides flat faces.",
      {&kCylinderParams}},
     {"sphere",
-     "sphere(r, slices: 32, stacks: 16, crease: 30)",
+     "sphere(r, slices: 32, stacks: 16, crease: 30, contours: \"edges\")",
      sphere_,
      "A sphere of radius r centred on the origin, slices around z and stacks from pole to pole.",
      {&kSphereParams}},
     {"torus",
-     "torus(R, r, major: 48, minor: 24, crease: 30)",
+     "torus(R, r, major: 48, minor: 24, crease: 30, contours: \"edges\")",
      torus_,
      "A torus about the z axis: ring radius R, tube radius r, major and minor segments.",
      {&kTorusParams}},

@@ -230,12 +230,15 @@ std::optional<RayCaster::SightLine> RayCaster::sight_line(Point3 p, Verdict& ver
   return line;
 }
 
-Verdict RayCaster::classify(Point3 p) const {
+Verdict RayCaster::classify(Point3 p) const { return classify(p, 0xffffffffu, {}); }
+
+Verdict RayCaster::classify(Point3 p, std::uint32_t object, const std::vector<std::uint32_t>& ignore) const {
   Verdict verdict;
   const std::optional<SightLine> line = sight_line(p, verdict);
   if (!line) return verdict;
   bool ambiguous = false;
   for (const FaceRecord& f : faces_) {
+    if (f.object == object && std::find(ignore.begin(), ignore.end(), f.face) != ignore.end()) continue;
     std::string why;
     const Hit h = test_face(f, line->eye, p, line->near_l, line->near_band, &why);
     if (h == Hit::Hidden) {

@@ -43,6 +43,9 @@ class RayCaster {
 
   Visibility visibility(Point3 p) const { return classify(p).visibility; }
   Verdict classify(Point3 p) const;
+  // The same, with faces `ignore` of object `object` left out (a smooth contour is not hidden by the faces
+  // round the face it lies on).
+  Verdict classify(Point3 p, std::uint32_t object, const std::vector<std::uint32_t>& ignore) const;
   // How many faces hide p (occlusion level: every face the sight line crosses before p, back faces too);
   // nullopt when any face is Ambiguous for p, or p is not beyond the near plane.
   std::optional<int> surfaces_in_front(Point3 p) const;
