@@ -77,7 +77,7 @@ bool near_contour_face(const Solid& solid, FaceIndex own, FaceIndex other) {
     longest2 = std::max(longest2, dot(side, side));
   }
   const Point3 centre = Point3{} + (1.0 / static_cast<double>(n)) * sum;
-  const double reach2 = 4 * longest2;
+  const double reach2 = longest2;
   for (const VertexIndex v : outer(solid, static_cast<std::size_t>(other))) {
     const Vector3 d = solid.vertices[v] - centre;
     if (dot(d, d) <= reach2) return true;

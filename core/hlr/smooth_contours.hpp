@@ -11,11 +11,12 @@
 //
 // Such a solid draws these segments instead of its Smooth edges on the contour. Each lies on its face, and
 // is hidden exactly like an edge by every face except those near its own face: of its solid, with a
-// vertex within twice the face's longest side of the face's centre. An interpolated contour runs inside
-// the mesh's polyhedral outline, on faces that turn away from the eye, and its sight line grazes the mesh
+// vertex within the face's longest side of the face's centre. An interpolated contour runs inside the
+// mesh's polyhedral outline, on faces that turn away from the eye, and its sight line grazes the mesh
 // there: it passes through the mesh's own faces for up to about half a face's length before it reaches
 // the contour (a chord's sagitta under a tangent), so those faces would hide what the smooth surface
 // shows. Long thin faces (a sphere's poles) make that neighbourhood wider than the faces round the face.
+// A fold of the surface nearer than that (a tube thinner than its faces are long) does not hide it.
 #pragma once
 
 #include <cstdint>

@@ -255,6 +255,9 @@ class FrameText {
       if (s.source == SegmentSource::Intersection) {
         out += ",\"other\":";
         out += quoted_name(s.other);
+      } else if (s.source == SegmentSource::Contour) {  // the smooth contour across this face
+        out += ",\"contour\":";
+        w_.integer(s.edge);
       } else {
         out += ",\"edge\":";
         w_.integer(s.edge);

@@ -10,7 +10,8 @@
 //                           "view_from_world": {"m": [[..],[..],[..]], "t": [..]}},
 //                "layout": {"mm_per_unit": s, "origin_mm": [x,y]},
 //                "segments": [{"p": [[x,y,z],[x,y,z]], "s": [[u,v],[u,v]], "object": "name",
-//                              "edge": i | "other": "name", "hidden": false, "level": k (hidden, levels)}],
+//                              "edge": i | "other": "name" | "contour": f, "hidden": false,
+//                              "level": k (hidden, levels)}],
 //                "strokes": [[[x_mm,y_mm], ...], ...],
 //                "stroke_pens": [1, ...] (the pen of each stroke),
 //                "hidden_strokes": [...], "hidden_stroke_pens": [...] (only with include_hidden),
@@ -29,7 +30,7 @@
 // eye). view_from_world maps world to (right, up, depth) as view = m·p + t; picture = focal·(right,
 // up)/depth + offset (perspective) or focal·(right, up) + offset (orthographic).
 // segments: pieces from an edge carry its index in the object's edge list; intersection lines carry
-// the other object's name instead. Hidden pieces appear only with include_hidden. With levels (hidden
+// the other object's name instead; pieces of a smooth contour (contours: "smooth") the face they cross. Hidden pieces appear only with include_hidden. With levels (hidden
 // lines drawn by occlusion level, `style hidden levels N`) each hidden segment carries "level": k, the
 // number of surfaces in front of it (1..N), and "hidden_stroke_levels" the level of each hidden stroke;
 // without, neither member is written (the document is as before levels existed).

@@ -168,7 +168,7 @@ ReferenceContour reference_contour(const Solid& s, const Camera& camera) {
   return out;
 }
 
-// The faces that hide no contour point on face `face`: those with a vertex within twice the face's longest
+// The faces that hide no contour point on face `face`: those with a vertex within the face's longest
 // side of its centroid.
 std::vector<std::uint32_t> faces_round(const Solid& s, std::uint32_t face) {
   const auto& own = s.faces[face].rings[0].vertices;
@@ -181,7 +181,7 @@ std::vector<std::uint32_t> faces_round(const Solid& s, std::uint32_t face) {
   std::vector<std::uint32_t> out;
   for (std::uint32_t f = 0; f < s.faces.size(); ++f)
     for (VertexIndex v : s.faces[f].rings[0].vertices)
-      if (distance(s.vertices[v], centre) <= 2 * longest) {
+      if (distance(s.vertices[v], centre) <= longest) {
         out.push_back(f);
         break;
       }
