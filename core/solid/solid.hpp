@@ -12,7 +12,7 @@
 #include "core/geometry/affine3.hpp"
 #include "core/geometry/vector.hpp"
 #include "core/small_vector.hpp"
-#include "core/solid/solid_cache.hpp"
+#include "core/solid/derived_cache.hpp"
 
 namespace hlr {
 
@@ -99,8 +99,8 @@ struct Solid {
   // faces (core/hlr/smooth_contours.hpp), instead of as its Smooth edges on the contour.
   bool smooth_contours = false;
 
-  SolidCache<std::vector<SelfCrossing>> self_crossing_cache;
-  SolidCache<CornerNormals> corner_normal_cache;
+  DerivedCache<std::vector<SelfCrossing>> self_crossing_cache;
+  DerivedCache<CornerNormals> corner_normal_cache;
 
   // This solid moved by `worldFromObject` (any invertible affine map; a mirror keeps faces outward).
   Solid transformed(const Affine3& worldFromObject) const;

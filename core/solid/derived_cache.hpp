@@ -9,20 +9,20 @@
 namespace hlr {
 
 template <typename T>
-class SolidCache {
+class DerivedCache {
  public:
-  SolidCache() = default;
-  SolidCache(const SolidCache&) {}
-  SolidCache& operator=(const SolidCache&) {
+  DerivedCache() = default;
+  DerivedCache(const DerivedCache&) {}
+  DerivedCache& operator=(const DerivedCache&) {
     replace(nullptr);
     return *this;
   }
-  SolidCache(SolidCache&& other) noexcept : value_(other.value_.exchange(nullptr)) {}
-  SolidCache& operator=(SolidCache&& other) noexcept {
+  DerivedCache(DerivedCache&& other) noexcept : value_(other.value_.exchange(nullptr)) {}
+  DerivedCache& operator=(DerivedCache&& other) noexcept {
     replace(other.value_.exchange(nullptr));
     return *this;
   }
-  ~SolidCache() { delete value_.load(); }
+  ~DerivedCache() { delete value_.load(); }
 
   // The kept value, or compute()'s, kept. Two threads may both compute; the result does not depend on
   // which one's is kept.
