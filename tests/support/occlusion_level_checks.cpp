@@ -8,24 +8,8 @@
 namespace hlr::test {
 namespace {
 
-std::string str(Point3 p) {
-  std::ostringstream s;
-  s << "(" << p.x << ", " << p.y << ", " << p.z << ")";
-  return s.str();
-}
-
 void fail(LevelReport& r, const std::string& message) {
   if (r.failures.size() < 8) r.failures.push_back(message);
-}
-
-bool in_frame(const Camera& c, Point2 s, double margin) {
-  if (!c.frame) return true;
-  const Rect2& f = *c.frame;
-  return s.x >= f.xmin + margin && s.x <= f.xmax - margin && s.y >= f.ymin + margin && s.y <= f.ymax - margin;
-}
-
-bool in_front(const Camera& c, Point3 p) {
-  return c.projection == Projection::Orthographic || c.view(p).z > c.near_depth;
 }
 
 }  // namespace
@@ -95,7 +79,7 @@ LevelReport check_occlusion_levels(const Scene& scene, const RayCaster& oracle, 
         }
         if (*count == 0 || !in_front(cam, p)) continue;  // visible: check_frame's part
         const Point2 pic = cam.project(p);
-        if (!in_frame(cam, pic, eps)) continue;
+        if (!in_frame(cam, pic, -eps)) continue;
         ++r.edge_hidden;
         bool on_level = false, on_any = false;
         if (it != pieces.end())

@@ -17,27 +17,20 @@ namespace {
 
 const char* kind_name(EdgeKind k) {
   switch (k) {
-    case EdgeKind::Feature: return "Feature";
-    case EdgeKind::Smooth: return "Smooth";
-    case EdgeKind::Flat: return "Flat";
-    case EdgeKind::Boundary: return "Boundary";
-    case EdgeKind::Marking: return "Marking";
-    case EdgeKind::Free: return "Free";
+    case EdgeKind::Feature:
+      return "Feature";
+    case EdgeKind::Smooth:
+      return "Smooth";
+    case EdgeKind::Flat:
+      return "Flat";
+    case EdgeKind::Boundary:
+      return "Boundary";
+    case EdgeKind::Marking:
+      return "Marking";
+    case EdgeKind::Free:
+      return "Free";
   }
   return "?";
-}
-
-std::string str(Point3 p) {
-  std::ostringstream s;
-  s.precision(17);
-  s << "(" << p.x << ", " << p.y << ", " << p.z << ")";
-  return s.str();
-}
-std::string str(Point2 p) {
-  std::ostringstream s;
-  s.precision(17);
-  s << "(" << p.x << ", " << p.y << ")";
-  return s.str();
 }
 
 void fail(CheckReport& r, const CheckOptions& o, const std::string& message) {
@@ -45,16 +38,6 @@ void fail(CheckReport& r, const CheckOptions& o, const std::string& message) {
     r.failures.push_back(message);
   else if (r.failures.size() == o.max_failures)
     r.failures.push_back("... further failures omitted");
-}
-
-bool in_frame(const Camera& c, Point2 s, double margin) {
-  if (!c.frame) return true;
-  const Rect2& f = *c.frame;
-  return s.x >= f.xmin - margin && s.x <= f.xmax + margin && s.y >= f.ymin - margin && s.y <= f.ymax + margin;
-}
-
-bool in_front(const Camera& c, Point3 p) {
-  return c.projection == Projection::Orthographic || c.view(p).z > c.near_depth;
 }
 
 std::uint64_t key(std::uint32_t object, std::uint32_t edge) { return (std::uint64_t{object} << 32) | edge; }
@@ -95,10 +78,12 @@ bool on_surface(const Scene& scene, const RayCaster& oracle, std::uint32_t objec
 }
 
 // Parameters t where the line p0 + t·u (u unit) crosses the edges of a face lying in a plane with it.
-void ring_crossings(const Solid& s, const Face& face, Point3 p0, Vector3 u, double tol, std::vector<double>& out) {
+void ring_crossings(const Solid& s, const Face& face, Point3 p0, Vector3 u, double tol,
+                    std::vector<double>& out) {
   for (const Ring& ring : face.rings)
     for (std::size_t i = 0; i < ring.vertices.size(); ++i) {
-      const Point3 c = s.vertices[ring.vertices[i]], d = s.vertices[ring.vertices[(i + 1) % ring.vertices.size()]];
+      const Point3 c = s.vertices[ring.vertices[i]],
+                   d = s.vertices[ring.vertices[(i + 1) % ring.vertices.size()]];
       const Vector3 e = d - c, w0 = p0 - c;
       const double b = dot(u, e), cc = dot(e, e), dd = dot(u, w0), ee = dot(e, w0);
       const double denom = cc - b * b;
@@ -111,6 +96,30 @@ void ring_crossings(const Solid& s, const Face& face, Point3 p0, Vector3 u, doub
 }
 
 }  // namespace
+
+std::string str(Point2 p) {
+  std::ostringstream s;
+  s.precision(17);
+  s << "(" << p.x << ", " << p.y << ")";
+  return s.str();
+}
+
+std::string str(Point3 p) {
+  std::ostringstream s;
+  s.precision(17);
+  s << "(" << p.x << ", " << p.y << ", " << p.z << ")";
+  return s.str();
+}
+
+bool in_frame(const Camera& c, Point2 s, double margin) {
+  if (!c.frame) return true;
+  const Rect2& f = *c.frame;
+  return s.x >= f.xmin - margin && s.x <= f.xmax + margin && s.y >= f.ymin - margin && s.y <= f.ymax + margin;
+}
+
+bool in_front(const Camera& c, Point3 p) {
+  return c.projection == Projection::Orthographic || c.view(p).z > c.near_depth;
+}
 
 std::string CheckReport::summary() const {
   std::ostringstream m;
@@ -129,12 +138,16 @@ std::vector<Point3> segment_samples(const VisibleSegment& s) {
   return out;
 }
 
-Candidate drawn_candidate(const RayCaster& oracle, std::uint32_t object, const Solid& solid, const SolidEdge& e) {
+Candidate drawn_candidate(const RayCaster& oracle, std::uint32_t object, const Solid& solid,
+                          const SolidEdge& e) {
   (void)solid;
   switch (e.kind) {
-    case EdgeKind::Flat: return Candidate::No;
-    case EdgeKind::Smooth: break;
-    default: return Candidate::Yes;
+    case EdgeKind::Flat:
+      return Candidate::No;
+    case EdgeKind::Smooth:
+      break;
+    default:
+      return Candidate::Yes;
   }
   if (e.left == kNoFace || e.right == kNoFace) return Candidate::Yes;
   const Camera& cam = oracle.camera();
@@ -208,20 +221,23 @@ CheckReport check_drawn_not_hidden(const Scene& scene, const RayCaster& oracle, 
       }
       const SolidEdge& e = solid.edges[s.edge];
       if (drawn_candidate(oracle, s.object, solid, e) == Candidate::No)
-        fail(r, options, where.str() + ": this edge is not drawn from here (Flat, or Smooth off the contour)");
+        fail(r, options,
+             where.str() + ": this edge is not drawn from here (Flat, or Smooth off the contour)");
       // The piece must lie on its edge.
       const Point3 v0 = solid.vertices[e.v0], v1 = solid.vertices[e.v1];
       const Vector3 ev = v1 - v0;
       for (Point3 p : {s.p0, s.p1}) {
         const double t = std::clamp(dot(p - v0, ev) / dot(ev, ev), 0.0, 1.0);
-        if (distance(p, v0 + t * ev) > tol) fail(r, options, where.str() + ": end point " + str(p) + " is off its edge");
+        if (distance(p, v0 + t * ev) > tol)
+          fail(r, options, where.str() + ": end point " + str(p) + " is off its edge");
       }
     }
     // Picture coordinates must be the camera's projection of the world end points.
     const std::pair<Point3, Point2> ends[2] = {{s.p0, s.s0}, {s.p1, s.s1}};
     for (const auto& [p, pic] : ends)
       if (in_front(cam, p) && distance(cam.project(p), pic) > eps + 1e-9 * length(pic - Point2{}))
-        fail(r, options, where.str() + ": picture point " + str(pic) + " is not the projection " + str(cam.project(p)));
+        fail(r, options,
+             where.str() + ": picture point " + str(pic) + " is not the projection " + str(cam.project(p)));
     for (Point3 p : segment_samples(s)) {
       ++r.drawn_samples;
       const Verdict v = oracle.classify(p);
@@ -230,8 +246,9 @@ CheckReport check_drawn_not_hidden(const Scene& scene, const RayCaster& oracle, 
         if (r.ambiguous_examples.size() < 3) r.ambiguous_examples.push_back(str(p) + ": " + v.reason);
       }
       if (v.visibility == Visibility::Hidden) {
-        fail(r, options, where.str() + ": drawn sample " + str(p) + " at picture " + str(cam.project(p)) +
-                             " is hidden: " + v.reason);
+        fail(r, options,
+             where.str() + ": drawn sample " + str(p) + " at picture " + str(cam.project(p)) +
+                 " is hidden: " + v.reason);
         break;  // one message per piece is enough
       }
       if (in_front(cam, p) && !in_frame(cam, cam.project(p), eps)) {
@@ -250,7 +267,8 @@ CheckReport check_drawn_not_hidden(const Scene& scene, const RayCaster& oracle, 
     const double len2 = dot(ev, ev);
     std::vector<std::pair<double, double>> spans;
     for (std::size_t i : idx) {
-      const double a = dot(result.segments[i].p0 - v0, ev) / len2, b = dot(result.segments[i].p1 - v0, ev) / len2;
+      const double a = dot(result.segments[i].p0 - v0, ev) / len2,
+                   b = dot(result.segments[i].p1 - v0, ev) / len2;
       spans.push_back({std::min(a, b), std::max(a, b)});
     }
     std::sort(spans.begin(), spans.end());
@@ -289,7 +307,8 @@ CheckReport check_visible_not_missing(const Scene& scene, const RayCaster& oracl
       if (drawn_candidate(oracle, o, solid, edge) != Candidate::Yes) continue;
       const Point3 v0 = solid.vertices[edge.v0], v1 = solid.vertices[edge.v1];
       // An edge seen (nearly) end-on is a point on the picture: nothing need be drawn.
-      if (in_front(cam, v0) && in_front(cam, v1) && distance(cam.project(v0), cam.project(v1)) < 10 * eps) continue;
+      if (in_front(cam, v0) && in_front(cam, v1) && distance(cam.project(v0), cam.project(v1)) < 10 * eps)
+        continue;
       const auto it = pieces.find(key(o, e));
       for (int i = 0; i < options.edge_samples; ++i) {
         const double t = (i + 0.5) / options.edge_samples;
@@ -307,7 +326,8 @@ CheckReport check_visible_not_missing(const Scene& scene, const RayCaster& oracl
         bool covered = false;
         if (it != pieces.end())
           for (std::size_t si : it->second)
-            covered = covered || point_segment_distance(pic, result.segments[si].s0, result.segments[si].s1) < eps;
+            covered =
+                covered || point_segment_distance(pic, result.segments[si].s0, result.segments[si].s1) < eps;
         // Where another solid's edge lies on this one, the line is drawn once (by either): a visible
         // piece of any object through the same world point, on the same picture point, draws it.
         for (std::size_t si = 0; !covered && si < result.segments.size(); ++si) {
@@ -320,9 +340,11 @@ CheckReport check_visible_not_missing(const Scene& scene, const RayCaster& oracl
           m << "missing: object " << o << " '" << scene.objects[o].name << "' edge " << e << " ("
             << kind_name(edge.kind) << ") " << str(v0) << " -> " << str(v1) << " at t = " << t << ": point "
             << str(p) << " picture " << str(pic) << " is visible but not drawn; pieces of this edge:";
-          if (it == pieces.end()) m << " none";
+          if (it == pieces.end())
+            m << " none";
           else
-            for (std::size_t si : it->second) m << " [" << str(result.segments[si].p0) << " -> " << str(result.segments[si].p1) << "]";
+            for (std::size_t si : it->second)
+              m << " [" << str(result.segments[si].p0) << " -> " << str(result.segments[si].p1) << "]";
           fail(r, options, m.str());
           break;  // one message per edge
         }
@@ -360,14 +382,16 @@ CheckReport check_intersections(const Scene& scene, const RayCaster& oracle, con
     for (Point3 p : segment_samples(s)) {
       ++r.intersection_samples;
       if (!on_surface(scene, oracle, s.object, p) || !on_surface(scene, oracle, s.other, p)) {
-        fail(r, options, "segment " + std::to_string(i) + ": " + segment_text(scene, s) + ": sample " + str(p) +
-                             " is not on both solids' surfaces");
+        fail(r, options,
+             "segment " + std::to_string(i) + ": " + segment_text(scene, s) + ": sample " + str(p) +
+                 " is not on both solids' surfaces");
         break;
       }
       const Verdict v = oracle.classify(p);
       if (v.visibility == Visibility::Hidden) {
-        fail(r, options, "segment " + std::to_string(i) + ": " + segment_text(scene, s) + ": sample " + str(p) +
-                             " is hidden: " + v.reason);
+        fail(r, options,
+             "segment " + std::to_string(i) + ": " + segment_text(scene, s) + ": sample " + str(p) +
+                 " is hidden: " + v.reason);
         break;
       }
     }
@@ -392,7 +416,8 @@ CheckReport check_intersections(const Scene& scene, const RayCaster& oracle, con
           const Vector3 dir = cross(na, nb);
           if (length(dir) < 1e-6) continue;  // (nearly) parallel planes: no transversal crossing
           // The line where the planes meet: p0 solves na·p = ha, nb·p = hb, with p0 ⟂ dir.
-          const double ha = -oracle.signed_distance(a, fa, Point3{}), hb = -oracle.signed_distance(b, fb, Point3{});
+          const double ha = -oracle.signed_distance(a, fa, Point3{}),
+                       hb = -oracle.signed_distance(b, fb, Point3{});
           const double c = dot(na, nb), det = 1 - c * c;
           const Point3 p0 = to_point(((ha - hb * c) / det) * na + ((hb - ha * c) / det) * nb);
           const Vector3 u = normalize(dir);
@@ -407,19 +432,21 @@ CheckReport check_intersections(const Scene& scene, const RayCaster& oracle, con
               const Point3 p = p0 + (ts[k] + (j + 0.5) / 5 * (ts[k + 1] - ts[k])) * u;
               const auto pa = oracle.proximity(a, fa, p), pb = oracle.proximity(b, fb, p);
               // Only points strictly inside both faces: there the surfaces cross transversally.
-              if (!pa.inside || !pb.inside || pa.boundary_distance <= tol || pb.boundary_distance <= tol) continue;
+              if (!pa.inside || !pb.inside || pa.boundary_distance <= tol || pb.boundary_distance <= tol)
+                continue;
               if (oracle.classify(p).visibility != Visibility::Visible) continue;
               const Point2 pic = cam.project(p);
               if (cam.frame && !in_frame(cam, pic, -eps)) continue;
               ++r.intersection_expected;
               bool covered = false;
               for (std::size_t si : pair_pieces)
-                covered = covered || point_segment_distance(pic, result.segments[si].s0, result.segments[si].s1) < eps;
+                covered = covered ||
+                          point_segment_distance(pic, result.segments[si].s0, result.segments[si].s1) < eps;
               if (!covered) {
                 std::ostringstream m;
                 m << "missing intersection: objects " << a << " '" << scene.objects[a].name << "' face " << fa
-                  << " and " << b << " '" << scene.objects[b].name << "' face " << fb << " cross at " << str(p)
-                  << " picture " << str(pic) << ", visible but not drawn (" << pair_pieces.size()
+                  << " and " << b << " '" << scene.objects[b].name << "' face " << fb << " cross at "
+                  << str(p) << " picture " << str(pic) << ", visible but not drawn (" << pair_pieces.size()
                   << " intersection pieces for this pair)";
                 fail(r, options, m.str());
                 break;

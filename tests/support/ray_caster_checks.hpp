@@ -26,14 +26,14 @@
 namespace hlr::test {
 
 struct CheckOptions {
-  int edge_samples = 17;                  // per candidate edge, at (i + 0.5)/n
-  double picture_relative = 1e-6;         // coverage distance, × picture extent
-  bool intersections = true;              // run (c)
-  std::size_t max_failures = 12;          // stop collecting messages after this many
+  int edge_samples = 17;           // per candidate edge, at (i + 0.5)/n
+  double picture_relative = 1e-6;  // coverage distance, × picture extent
+  bool intersections = true;       // run (c)
+  std::size_t max_failures = 12;   // stop collecting messages after this many
 };
 
 struct CheckReport {
-  std::size_t drawn_samples = 0, drawn_ambiguous = 0;        // (a)
+  std::size_t drawn_samples = 0, drawn_ambiguous = 0;                  // (a)
   std::size_t edge_samples = 0, edge_visible = 0, edge_ambiguous = 0;  // (b)
   std::size_t intersection_samples = 0, intersection_expected = 0;     // (c)
   std::vector<std::string> failures;
@@ -43,14 +43,23 @@ struct CheckReport {
 };
 
 // Fractions of a piece's length at which it is sampled: 1e-3 from each end and five evenly between.
-inline constexpr std::array<double, 7> kSegmentSampleFractions = {1e-3,      1.0 / 6, 2.0 / 6, 3.0 / 6,
-                                                                   4.0 / 6, 5.0 / 6, 1 - 1e-3};
+inline constexpr std::array<double, 7> kSegmentSampleFractions = {1e-3,    1.0 / 6, 2.0 / 6, 3.0 / 6,
+                                                                  4.0 / 6, 5.0 / 6, 1 - 1e-3};
 std::vector<Point3> segment_samples(const VisibleSegment& s);
 
 // Whether an edge is a drawn candidate from this camera: Feature, Boundary, Marking, Free always; Flat
 // never; Smooth when exactly one adjacent face faces the eye (Ambiguous when a face is nearly edge-on).
 enum class Candidate { Yes, No, Ambiguous };
-Candidate drawn_candidate(const RayCaster& oracle, std::uint32_t object, const Solid& solid, const SolidEdge& e);
+Candidate drawn_candidate(const RayCaster& oracle, std::uint32_t object, const Solid& solid,
+                          const SolidEdge& e);
+
+// A point with full precision, for failure messages.
+std::string str(Point3 p);
+std::string str(Point2 p);
+// Whether picture point s lies in the camera's frame grown by `margin` (negative: shrunk); true without one.
+bool in_frame(const Camera& c, Point2 s, double margin);
+// Whether world point p lies beyond the near plane (always, orthographic).
+bool in_front(const Camera& c, Point3 p);
 
 // Picture-coordinate scale for coverage: the frame's diagonal, else the bounding box of the pieces' ends
 // and the vertices (perspective: only those within 45° of the view axis, and at least the 90° field).
