@@ -11,6 +11,8 @@ inline constexpr int kMaxPen = 255;
 // Occlusion levels drawn run 1…kMaxOcclusionLevel: past a few surfaces a plotter drawing is a thicket, and
 // each level is a layer (and on plotters a pen) of its own.
 inline constexpr int kMaxOcclusionLevel = 16;
+// Hatch lines laid by one hatch() call: a million lines is already a day's plotting.
+inline constexpr double kMaxHatchLines = 1e6;
 // The widest pen line: beyond a centimetre a stroke is no longer a line.
 inline constexpr double kMaxPenWidthMm = 10;
 

@@ -234,14 +234,17 @@ void add_edge_candidates(FrameSetup& part, std::uint32_t o, const Solid& solid,
         break;
       }
       case EdgeKind::Marking:
+      case EdgeKind::Hatch:
         culled = cull && fl <= 0;
         break;
       case EdgeKind::Boundary:
       case EdgeKind::Free:
         break;
     }
-    if (culled && !keep_culled) continue;
+    const bool hatch = edge.kind == EdgeKind::Hatch;
+    if (culled && (!keep_culled || hatch)) continue;  // a hatch line is never drawn hidden
     Candidate c;
+    c.hatch = hatch;
     c.object = o;
     c.edge = e;
     c.own_face0 = edge.left;

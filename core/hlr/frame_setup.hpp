@@ -39,6 +39,7 @@ struct Candidate {
   std::uint32_t other = 0;
   SegmentSource source = SegmentSource::Edge;
   bool culled = false;  // hidden by the back-face rules alone (no occlusion test needed)
+  bool hatch = false;   // a hatch line (EdgeKind::Hatch): only its visible pieces are kept
   // Faces that must not be tested against this edge (its own faces): (own_object0(), own_face0) and
   // (own_object1(), own_face1).
   FaceIndex own_face0 = kNoFace, own_face1 = kNoFace;

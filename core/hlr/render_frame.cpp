@@ -72,11 +72,12 @@ struct Worker {
     seg.p1 = world_from_view.apply(lerp(c.view0, c.view1, t1));
     seg.s0 = lerp(c.pic0, c.pic1, s0);
     seg.s1 = lerp(c.pic0, c.pic1, s1);
-    if (distance(seg.s0, seg.s1) <= c.picture_tolerance) return;
+    if (distance(seg.s0, seg.s1) <= c.picture_tolerance || (level > 0 && c.hatch)) return;
     seg.object = c.object;
     seg.edge = c.edge;
     seg.other = c.other;
     seg.source = c.source;
+    seg.hatch = c.hatch;
     seg.hidden = level > 0;
     seg.level = level;
     out.push_back(seg);

@@ -25,6 +25,7 @@ struct VisibleSegment {
   // Hidden pieces: how many surfaces lie between the eye and the piece when the frame counted them
   // (HlrOptions::max_level > 0; every face counts, back faces too), else 1. Visible pieces: 0.
   std::uint16_t level = 0;
+  bool hatch = false;  // a piece of a hatch line (EdgeKind::Hatch, Edge source), drawn in the hatch pen
 };
 
 struct FrameStats {

@@ -43,7 +43,7 @@ bool snap(double mm, double grid, std::int64_t& out) {
 }
 
 std::vector<Group> snap_groups(const std::vector<PlotPiece>& pieces, double grid, std::size_t& dropped) {
-  // (pen, layer, level) → group: Visible (0) before Hidden (1), hidden levels ascending.
+  // (pen, layer, level) → group: Visible (0) before Hidden (1) before Hatch (2), hidden levels ascending.
   using Key = std::tuple<int, int, int>;
   std::map<Key, std::size_t> index;
   std::vector<Group> groups;
@@ -56,7 +56,7 @@ std::vector<Group> snap_groups(const std::vector<PlotPiece>& pieces, double grid
       ++dropped;
       continue;
     }
-    const Key key{p.pen, p.layer == StrokeLayer::Visible ? 0 : 1, p.level};
+    const Key key{p.pen, static_cast<int>(p.layer), p.level};
     if (key != last_key) {
       auto [it, inserted] = index.try_emplace(key, groups.size());
       if (inserted) groups.push_back(Group{p.pen, p.layer, p.level, {}, {}});

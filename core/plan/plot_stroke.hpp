@@ -10,8 +10,9 @@
 namespace hlr {
 
 // Hidden strokes exist only when the hidden layer is on; cairo devices dash them, HPGL gives them their
-// own pen (PlotStroke::pen).
-enum class StrokeLayer { Visible, Hidden };
+// own pen (PlotStroke::pen). Hatch strokes are the visible pieces of hatch lines (core/solid/hatching.hpp):
+// drawn solid like visible ones, but a layer of their own so that they are planned, and plotted, apart.
+enum class StrokeLayer { Visible, Hidden, Hatch };
 
 struct PlotStroke {
   std::vector<Point2> points;  // at least two; consecutive points differ

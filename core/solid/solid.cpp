@@ -34,7 +34,8 @@ void link_ring_edges(Solid& solid) {
     return (std::uint64_t{std::min(a, b)} << 32) | std::max(a, b);
   };
   for (std::uint32_t e = 0; e < solid.edges.size(); ++e)
-    if (solid.edges[e].kind != EdgeKind::Marking && solid.edges[e].kind != EdgeKind::Free)
+    if (solid.edges[e].kind != EdgeKind::Marking && solid.edges[e].kind != EdgeKind::Free &&
+        solid.edges[e].kind != EdgeKind::Hatch)
       index.emplace(key(solid.edges[e].v0, solid.edges[e].v1), e);
   for (Face& f : solid.faces)
     for (Ring& r : f.rings) {
@@ -57,6 +58,7 @@ Solid Solid::transformed(const Affine3& worldFromObject) const {
   out.folded = folded;
   out.crease_angle_deg = crease_angle_deg;
   out.smooth_contours = smooth_contours;
+  out.hatch_pen = hatch_pen;
   out.vertices.reserve(vertices.size());
   for (const Point3& p : vertices) out.vertices.push_back(worldFromObject.apply(p));
 

@@ -53,6 +53,8 @@ enum class EdgeKind : std::uint8_t {
   Boundary,  // on exactly one face (open surface): always a candidate
   Marking,   // a line lying on a face: drawn where visible, hides nothing
   Free,      // a line on no face: drawn where visible, hides nothing
+  Hatch,     // shading laid on a face (core/solid/hatching.hpp): a marking the devices draw in the hatch pen,
+             // never as a hidden line
 };
 
 // An undirected edge. For edges between two faces, `left` is the face that traverses v0→v1 (the edge
@@ -98,6 +100,8 @@ struct Solid {
   // It stands for a smooth surface: its outline is drawn as that surface's contour, interpolated across its
   // faces (core/hlr/smooth_contours.hpp), instead of as its Smooth edges on the contour.
   bool smooth_contours = false;
+  // The pen its Hatch edges are drawn in (1..255); 0: the pen the solid is drawn in.
+  int hatch_pen = 0;
 
   DerivedCache<std::vector<SelfCrossing>> self_crossing_cache;
   DerivedCache<CornerNormals> corner_normal_cache;

@@ -48,6 +48,7 @@ const BuiltinTable& builtins() {
     register_camera_builtins(t);
     register_animation_builtins(t);
     register_import_builtins(t);
+    register_hatch_builtins(t);
     return t;
   }();
   return table;

@@ -132,6 +132,12 @@ std::shared_ptr<const Solid> SolidCache::placed(const std::shared_ptr<const Soli
   return lookup_or_make(key, source, make);
 }
 
+std::shared_ptr<const Solid> SolidCache::derived(const std::shared_ptr<const Solid>& source,
+                                                 const std::string& how, const Make& make) {
+  return lookup_or_make("d" + std::to_string(reinterpret_cast<std::uintptr_t>(source.get())) + ':' + how,
+                        source, make);
+}
+
 SolidCacheStats SolidCache::stats() const {
   const std::lock_guard<std::mutex> lock(s_->mutex);
   SolidCacheStats out = s_->stats;

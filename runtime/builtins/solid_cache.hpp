@@ -42,6 +42,10 @@ class SolidCache {
   std::shared_ptr<const Solid> placed(const std::shared_ptr<const Solid>& source,
                                       const Affine3& world_from_object, const Make& make);
 
+  // What `make` derives from `source` (hatch() lays lines on it), `how` the exact key of the derivation: the
+  // cached one, else make()'s.
+  std::shared_ptr<const Solid> derived(const std::shared_ptr<const Solid>& source, const std::string& how,
+                                       const Make& make);
   SolidCacheStats stats() const;
   void clear();
 

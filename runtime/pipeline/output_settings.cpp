@@ -277,6 +277,8 @@ void resolve_device(const FrameScene& scene, const RunSettings& run, FrameSettin
   // idle core takes it, a busy arena runs it in turn (the plan is the same either way).
   plot.plan.threads = 2;
   plot.object_pens = scene.object_pens;
+  plot.hatch_pens.clear();
+  for (const SceneObject& o : scene.scene.objects) plot.hatch_pens.push_back(o.solid->hatch_pen);
   plot.hidden_pen = scene.hidden_pen;
   plot.hidden = s.hidden;
   if (planning.hidden_as_dashes) plot.hidden_dashes = run.device.dash;  // unset with --dash solid

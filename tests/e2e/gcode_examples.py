@@ -148,9 +148,10 @@ def json_segments(doc, origin):
     page_h = doc["page"]["height_mm"]
     frame = doc["frames"][0]
     out = []
-    # The hidden layer (style hidden dashed, drawn whole with --dash solid) is drawn like any stroke, with its pen.
-    strokes = frame["strokes"] + frame.get("hidden_strokes", [])
-    pens = frame["stroke_pens"] + frame.get("hidden_stroke_pens", [])
+    # The hidden layer (style hidden dashed, drawn whole with --dash solid) and the hatching are drawn like any
+    # stroke, with their pens.
+    strokes = frame["strokes"] + frame.get("hidden_strokes", []) + frame.get("hatch_strokes", [])
+    pens = frame["stroke_pens"] + frame.get("hidden_stroke_pens", []) + frame.get("hatch_stroke_pens", [])
     if len(strokes) != len(pens):
         raise GcodeError("the JSON has a pen for each stroke")
     for pts, pen in zip(strokes, pens):

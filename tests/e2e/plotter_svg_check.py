@@ -6,9 +6,10 @@ usage: plotter_svg_check.py FRAME.svg FRAME.json
 
 - Read as XML (Python's parser, not ours): the root is sized in mm with a matching viewBox; it holds only
   a <title> and layers (<g inkscape:groupmode="layer">), each labelled "N ..." with N its pen, in pen order
-  with a pen's hidden layer after its visible one; a layer holds only <path>s, unfilled, stroked.
+  with a pen's hidden layer after its visible one and its hatch layer ("N hatch") last; a layer holds only
+  <path>s, unfilled, stroked.
 - The paths, read back in id order (s0, s1, ...: the planned order) and split by layer, equal the JSON's
-  `strokes` and `hidden_strokes` point for point (to 0.001 mm) with the JSON's pens, and within each layer
+  `strokes`, `hidden_strokes` and `hatch_strokes` point for point (to 0.001 mm) with the JSON's pens, and within each layer
   they come in planned order.
 - `inkscape --query-all` lists every layer and path, and each path's box is the stroke's box grown by
   half the pen's width (round caps), at 96 px per inch (a dashed one's lies within it).
@@ -62,7 +63,7 @@ def main():
     if [float(v) for v in root.get("viewBox").split()] != [0, 0, width, height]:
         fail(f"viewBox '{root.get('viewBox')}' does not match the size")
 
-    paths = {}  # index → (pen, hidden, points)
+    paths = {}  # index → (pen, kind, points, width, level); kind 0 visible, 1 hidden, 2 hatch
     layer_keys = []
     for child in root:
         if child.tag == SVG + "title":
@@ -73,11 +74,11 @@ def main():
         m = re.fullmatch(r"(\d+) (.+)", label)
         if not m:
             fail(f"layer label '{label}' does not start with its pen number")
-        # "N hidden", or by occlusion level "N hidden K"
+        # "N hidden", or by occlusion level "N hidden K"; "N hatch"; else "N colour"
         level_match = re.fullmatch(r"hidden(?: (\d+))?", m.group(2))
-        pen, hidden = int(m.group(1)), bool(level_match)
+        pen, kind = int(m.group(1)), 1 if level_match else (2 if m.group(2) == "hatch" else 0)
         level = int(level_match.group(1)) if level_match and level_match.group(1) else 0
-        layer_keys.append((pen, hidden, level))
+        layer_keys.append((pen, kind, level))
         if child.get("fill") != "none" or not child.get("stroke") or not child.get("stroke-width"):
             fail(f"layer '{label}' is not stroke-only")
         last = -1
@@ -90,17 +91,20 @@ def main():
             if index <= last:
                 fail(f"layer '{label}': path s{index} after s{last}, not in planned order")
             last = index
-            paths[index] = (pen, hidden, points_of(path.get("d")), float(child.get("stroke-width")), level)
+            paths[index] = (pen, kind, points_of(path.get("d")), float(child.get("stroke-width")), level)
     if layer_keys != sorted(layer_keys) or len(set(layer_keys)) != len(layer_keys):
         fail(f"layers {layer_keys} are not one per pen and layer, in pen order")
 
-    visible = [p for _, p in sorted(paths.items()) if not p[1]]
-    hidden = [p for _, p in sorted(paths.items()) if p[1]]
+    visible = [p for _, p in sorted(paths.items()) if p[1] == 0]
+    hidden = [p for _, p in sorted(paths.items()) if p[1] == 1]
+    hatch = [p for _, p in sorted(paths.items()) if p[1] == 2]
     hidden_levels = frame.get("hidden_stroke_levels", [0] * len(frame.get("hidden_strokes", [])))
     for name, got, strokes, pens, levels in (
             ("strokes", visible, frame["strokes"], frame["stroke_pens"], [0] * len(frame["strokes"])),
             ("hidden_strokes", hidden, frame.get("hidden_strokes", []), frame.get("hidden_stroke_pens", []),
-             hidden_levels)):
+             hidden_levels),
+            ("hatch_strokes", hatch, frame.get("hatch_strokes", []), frame.get("hatch_stroke_pens", []),
+             [0] * len(frame.get("hatch_strokes", [])))):
         if len(got) != len(strokes):
             fail(f"{len(got)} paths, the JSON has {len(strokes)} {name}")
         for k, (path, stroke, pen, level) in enumerate(zip(got, strokes, pens, levels)):
@@ -117,24 +121,26 @@ def main():
         parts = line.split(",")
         if len(parts) == 5:
             listed[parts[0]] = [float(v) for v in parts[1:]]
-    for pen, is_hidden, level in layer_keys:
-        if f"layer-{pen}{'-hidden' if is_hidden else ''}{f'-{level}' if level else ''}" not in listed:
+    for pen, kind, level in layer_keys:
+        suffix = {0: "", 1: "-hidden", 2: "-hatch"}[kind]
+        if f"layer-{pen}{suffix}{f'-{level}' if level else ''}" not in listed:
             fail(f"Inkscape does not list the layer of pen {pen}")
-    for index, (_, is_hidden, points, width, _) in paths.items():
+    for index, (_, kind, points, width, _) in paths.items():
         box = listed.get(f"s{index}")
         if box is None:
             fail(f"Inkscape does not list path s{index}")
         xs, ys = [p[0] for p in points], [p[1] for p in points]
         want = [(min(xs) - width / 2) * PX_PER_MM, (min(ys) - width / 2) * PX_PER_MM,
                 (max(xs) - min(xs) + width) * PX_PER_MM, (max(ys) - min(ys) + width) * PX_PER_MM]
-        if is_hidden:  # dashed: the dashes may stop short of the ends, never beyond them
+        if kind == 1:  # dashed: the dashes may stop short of the ends, never beyond them
             inside = (box[0] >= want[0] - 0.05 and box[1] >= want[1] - 0.05 and
                       box[0] + box[2] <= want[0] + want[2] + 0.05 and box[1] + box[3] <= want[1] + want[3] + 0.05)
             if not inside:
                 fail(f"Inkscape's box of dashed s{index} is {box}, beyond {want}")
         elif any(abs(a - b) > 0.05 for a, b in zip(box, want)):
             fail(f"Inkscape's box of s{index} is {box}, expected {want}")
-    print(f"{svg_path}: {len(layer_keys)} layers, {len(visible)} visible and {len(hidden)} hidden paths agree")
+    print(f"{svg_path}: {len(layer_keys)} layers, {len(visible)} visible, {len(hidden)} hidden and {len(hatch)} "
+          "hatch paths agree")
 
 
 if __name__ == "__main__":

@@ -29,6 +29,8 @@ const char* kind_name(EdgeKind k) {
       return "Marking";
     case EdgeKind::Free:
       return "Free";
+    case EdgeKind::Hatch:
+      return "Hatch";
   }
   return "?";
 }

@@ -136,6 +136,12 @@ class FrameText {
       strokes(StrokeLayer::Visible, indent);
       w_.member("stroke_pens", indent, false);
       pens(StrokeLayer::Visible);
+      if (has_hatch()) {  // only when there is hatching: frames without keep the schema they had
+        w_.member("hatch_strokes", indent, false);
+        strokes(StrokeLayer::Hatch, indent);
+        w_.member("hatch_stroke_pens", indent, false);
+        pens(StrokeLayer::Hatch);
+      }
       if (o_.include_hidden) {
         w_.member("hidden_strokes", indent, false);
         strokes(StrokeLayer::Hidden, indent);
@@ -261,6 +267,7 @@ class FrameText {
       } else {
         out += ",\"edge\":";
         w_.integer(s.edge);
+        if (s.hatch) out += ",\"hatch\":true";
       }
       out += s.hidden ? ",\"hidden\":true" : ",\"hidden\":false";
       if (s.hidden && o_.levels) {
@@ -271,6 +278,12 @@ class FrameText {
     }
     if (!first) w_.line(indent);
     out += ']';
+  }
+
+  bool has_hatch() const {
+    for (const PlotStroke& stroke : f_.plot.page.strokes)
+      if (stroke.layer == StrokeLayer::Hatch) return true;
+    return false;
   }
 
   void strokes(StrokeLayer layer, int indent) {

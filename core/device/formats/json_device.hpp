@@ -10,10 +10,11 @@
 //                           "view_from_world": {"m": [[..],[..],[..]], "t": [..]}},
 //                "layout": {"mm_per_unit": s, "origin_mm": [x,y]},
 //                "segments": [{"p": [[x,y,z],[x,y,z]], "s": [[u,v],[u,v]], "object": "name",
-//                              "edge": i | "other": "name" | "contour": f, "hidden": false,
-//                              "level": k (hidden, levels)}],
+//                              "edge": i | "other": "name" | "contour": f, "hatch": true (hatch lines),
+//                              "hidden": false, "level": k (hidden, levels)}],
 //                "strokes": [[[x_mm,y_mm], ...], ...],
 //                "stroke_pens": [1, ...] (the pen of each stroke),
+//                "hatch_strokes": [...], "hatch_stroke_pens": [...] (only when the frame has hatching),
 //                "hidden_strokes": [...], "hidden_stroke_pens": [...] (only with include_hidden),
 //                "hidden_stroke_levels": [1, ...] (only with levels),
 //                "stats": {"segments": n, "pen_down_mm": d, "pen_up_mm": u, "pen_up_mean_mm": m,
@@ -33,9 +34,11 @@
 // the other object's name instead; pieces of a smooth contour (contours: "smooth") the face they cross. Hidden pieces appear only with include_hidden. With levels (hidden
 // lines drawn by occlusion level, `style hidden levels N`) each hidden segment carries "level": k, the
 // number of surfaces in front of it (1..N), and "hidden_stroke_levels" the level of each hidden stroke;
-// without, neither member is written (the document is as before levels existed).
+// without, neither member is written (the document is as before levels existed). Pieces of hatch lines
+// (hatch(), core/solid/hatching.hpp) are edge pieces that also carry "hatch": true; they are never hidden.
 // strokes: the plot's visible-layer strokes (pen-planned by core/plan/pen_plan.hpp), in plotting order,
-// with stroke_pens the pen of each; hidden_strokes and hidden_stroke_pens the hidden layer's, likewise.
+// with stroke_pens the pen of each; hidden_strokes and hidden_stroke_pens the hidden layer's, likewise;
+// hatch_strokes and hatch_stroke_pens the hatching's, written only when there is some.
 // The device neither reorders nor joins them. The plan draws pen by pen, visible before hidden within a
 // pen, so on the plotter the two lists interleave when there are several pens. stats are the plan's
 // (PlanStats), over every stroke it planned (both layers): pen_up_mm the travel from the home position

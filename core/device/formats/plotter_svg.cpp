@@ -66,7 +66,7 @@ std::string xml_text(const std::string& text) {
 
 // A layer: a pen, whether it holds that pen's hidden strokes, and their occlusion level (0: not counted).
 // Visible layers come before hidden ones of the same pen, hidden ones by level: the plan's order.
-using LayerKey = std::tuple<int, bool, int>;
+using LayerKey = std::tuple<int, StrokeLayer, int>;  // (pen, layer, level)
 
 // The pieces of one stroke to draw: itself, or with `clip` the parts on the page.
 // `page` has a hair of slack for rounding in the layout; cuts are made at the page's exact edge, `cut`.
@@ -108,8 +108,10 @@ void append_path(std::string& out, const std::vector<Point2>& points, std::size_
 
 }  // namespace
 
-std::string plotter_svg_layer_label(int pen, const PenStyle& style, bool hidden, int level) {
-  if (hidden) return std::to_string(pen) + " hidden" + (level > 0 ? " " + std::to_string(level) : "");
+std::string plotter_svg_layer_label(int pen, const PenStyle& style, StrokeLayer layer, int level) {
+  if (layer == StrokeLayer::Hidden)
+    return std::to_string(pen) + " hidden" + (level > 0 ? " " + std::to_string(level) : "");
+  if (layer == StrokeLayer::Hatch) return std::to_string(pen) + " hatch";
   return std::to_string(pen) + " " + colour_text({style.r, style.g, style.b});
 }
 
@@ -128,7 +130,7 @@ std::string to_plotter_svg(const PlotPage& page, const PlotterSvgOptions& option
   for (std::size_t i = 0; i < page.strokes.size(); ++i) {
     const PlotStroke& stroke = page.strokes[i];
     const bool hidden = stroke.layer == StrokeLayer::Hidden;
-    std::string& paths = layers[{stroke.pen, hidden, hidden ? stroke.level : 0}];
+    std::string& paths = layers[{stroke.pen, stroke.layer, hidden ? stroke.level : 0}];
     const auto pieces = pieces_on_page(stroke, sheet, {0, 0, page.width_mm, page.height_mm}, options.clip, i);
     for (std::size_t k = 0; k < pieces.size(); ++k) append_path(paths, pieces[k], i, k);
   }
@@ -143,16 +145,18 @@ std::string to_plotter_svg(const PlotPage& page, const PlotterSvgOptions& option
          mm_text(page.width_mm) + " " + mm_text(page.height_mm) + "\">\n";
   if (!options.title.empty()) out += "  <title>" + xml_text(options.title) + "</title>\n";
   for (const auto& [key, paths] : layers) {
-    const auto [pen, hidden, level] = key;
+    const auto [pen, layer, level] = key;
+    const bool hidden = layer == StrokeLayer::Hidden;
     const PenStyle style = options.pens.style(pen);
     // The digits, not a name: SVG's names differ from ours for some colours (CSS green is half green).
     char hex[8];
     const auto byte = [](double v) { return static_cast<unsigned>(std::lround(v * 255)); };
     std::snprintf(hex, sizeof hex, "#%02x%02x%02x", byte(style.r), byte(style.g), byte(style.b));
     const std::string id = std::to_string(pen) + (hidden ? "-hidden" : "") +
+                           (layer == StrokeLayer::Hatch ? "-hatch" : "") +
                            (level > 0 ? "-" + std::to_string(level) : std::string());
     out += "  <g inkscape:groupmode=\"layer\" id=\"layer-" + id + "\" inkscape:label=\"" +
-           xml_text(plotter_svg_layer_label(pen, style, hidden, level)) + "\" fill=\"none\" stroke=\"" +
+           xml_text(plotter_svg_layer_label(pen, style, layer, level)) + "\" fill=\"none\" stroke=\"" +
            std::string(hex) + "\" stroke-width=\"" + mm_text(style.width_mm) +
            "\" stroke-linecap=\"round\" stroke-linejoin=\"round\"";
     if (hidden) {

@@ -8,7 +8,7 @@
 //     the hidden strokes of a pen in a layer of their own after it, "N hidden" (dashed on screen; a plotter
 //     that ignores dashes draws them whole, as the JSON strokes are); drawn by occlusion level, a layer
 //     per level instead, "N hidden K" for level K, levels ascending, each dashed in its level's pattern
-//     (core/device/page/page_style.hpp);
+//     (core/device/page/page_style.hpp); the visible pieces of hatch lines in a layer "N hatch" after them;
 //   - in each layer one `<path>` per planned stroke, in planned order (ids s0, s1, … in the order of
 //     PlotPage::strokes), `fill="none"`, the pen's colour and width, round caps and joins;
 //   - no border, no background, no caption glyphs (text arrives as ordinary strokes, single-stroke).
@@ -31,8 +31,8 @@ struct PlotterSvgOptions {
 };
 
 // The page's layer label for `pen`: "1 black", "2 red", "9 #1a2b3c"; hidden: "2 hidden", and with an
-// occlusion level (level > 0) "2 hidden 3".
-std::string plotter_svg_layer_label(int pen, const PenStyle& style, bool hidden, int level = 0);
+// occlusion level (level > 0) "2 hidden 3"; hatching: "3 hatch".
+std::string plotter_svg_layer_label(int pen, const PenStyle& style, StrokeLayer layer, int level = 0);
 
 // Throws DeviceError: a page that is not finite and positive, a point that is not finite, a point off the
 // page without `clip`.

@@ -86,6 +86,11 @@ PagePlot plot_page(const std::vector<VisibleSegment>& segments, const std::optio
     // Level k in the k-th pen from the hidden pen: each level a pen of its own on a plotter.
     p.pen = s.hidden && hidden_pen > 0 ? checked_pen(hidden_pen + std::max(level, 1) - 1) : object_pen;
     p.layer = s.hidden ? StrokeLayer::Hidden : StrokeLayer::Visible;
+    if (s.hatch && !s.hidden) {  // the engine gives no hidden hatch pieces
+      const int hatch_pen = s.object < o.hatch_pens.size() ? o.hatch_pens[s.object] : 0;
+      if (hatch_pen > 0) p.pen = checked_pen(hatch_pen);
+      p.layer = StrokeLayer::Hatch;
+    }
     p.level = level;
     if (level > 0) ++out.level_pieces[static_cast<std::size_t>(level)];
     pieces.push_back(p);

@@ -30,6 +30,8 @@ struct PagePlotOptions {
   // Pen of hidden pieces; unset: the object's pen. Drawn by occlusion level, level k is in pen
   // hidden_pen + k − 1 (a pen past kMaxPen is a DeviceError).
   std::optional<int> hidden_pen;
+  // Pen of hatch pieces (VisibleSegment::hatch), by object; 0, or objects past the end: the object's pen.
+  std::vector<int> hatch_pens;
   // Hidden pieces are planned (and drawn) only when hidden.drawn(); by level (Levels), those of levels
   // 1..hidden.levels, each PlotPiece carrying its level; plain dashed ones at level 0.
   HiddenStyle hidden;

@@ -116,6 +116,7 @@ inline void expect_valid_solid(const Solid& s, double off_plane = 1e-6) {
         EXPECT_EQ(e.right, kNoFace);
         break;
       case EdgeKind::Marking:
+      case EdgeKind::Hatch:
         EXPECT_NE(e.left, kNoFace);
         EXPECT_EQ(e.left, e.right);
         break;

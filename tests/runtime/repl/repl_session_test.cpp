@@ -174,7 +174,7 @@ TEST(ReplSession, CompletionInsideACallOffersItsParameterNamesFirst) {
   // The session's own functions.
   feed_all(s, {"def post(height, width = 1) = box(width, width, height)"});
   EXPECT_EQ(s.completions("draw post(h", "h"),
-            (std::vector<std::string>{"height:", "heightfield", "hexahedron", "hole"}));
+            (std::vector<std::string>{"height:", "hatch", "heightfield", "hexahedron", "hole"}));
   // A file name after import(": libedit's own completion.
   EXPECT_TRUE(s.completions("let m = import(\"b", "b").empty());
 }

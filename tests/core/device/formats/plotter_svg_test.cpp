@@ -117,11 +117,12 @@ TEST(PlotterSvg, BadPagesAndPointsAreErrors) {
 }
 
 TEST(PlotterSvg, LayerLabelsNameTheColour) {
-  EXPECT_EQ(plotter_svg_layer_label(1, default_pen_style(1), false), "1 black");
-  EXPECT_EQ(plotter_svg_layer_label(4, default_pen_style(4), false), "4 blue");
-  EXPECT_EQ(plotter_svg_layer_label(7, default_pen_style(7), false), "7 #cc9900");
-  EXPECT_EQ(plotter_svg_layer_label(2, default_pen_style(2), true), "2 hidden");
-  EXPECT_EQ(plotter_svg_layer_label(2, default_pen_style(2), true, 3), "2 hidden 3");
+  EXPECT_EQ(plotter_svg_layer_label(1, default_pen_style(1), StrokeLayer::Visible), "1 black");
+  EXPECT_EQ(plotter_svg_layer_label(4, default_pen_style(4), StrokeLayer::Visible), "4 blue");
+  EXPECT_EQ(plotter_svg_layer_label(7, default_pen_style(7), StrokeLayer::Visible), "7 #cc9900");
+  EXPECT_EQ(plotter_svg_layer_label(2, default_pen_style(2), StrokeLayer::Hidden), "2 hidden");
+  EXPECT_EQ(plotter_svg_layer_label(2, default_pen_style(2), StrokeLayer::Hidden, 3), "2 hidden 3");
+  EXPECT_EQ(plotter_svg_layer_label(3, default_pen_style(3), StrokeLayer::Hatch), "3 hatch");
 }
 
 // Hidden lines by occlusion level: a layer per pen and level, "N hidden K", after the pen's visible layer
