@@ -29,6 +29,27 @@ Vector3 face_horizontal(Vector3 n) {
   return h / len;
 }
 
+// Planes: the planes dot(m, x) = k · step + offset cut the face along n × m. Every face uses the same m, so a
+// plane meets the two faces of an edge at one point, found from the edge alone: the lines run on unbroken
+// across the faces. A face parallel to the planes gets none of them. The crossing set (crossing_step > 0)
+// is cut by planes at right angles, normal to m × z (x when m is upright).
+int plane_sets(const HatchSpec& spec, Vector3 n, double step, double crossing_step, LineSet out[2]) {
+  const Vector3 m = normalize(*spec.planes);
+  Vector3 m2 = cross(m, Vector3{0, 0, 1});
+  m2 = length(m2) < 1e-9 ? Vector3{1, 0, 0} : normalize(m2);
+  int count = 0;
+  const Vector3 normals[2] = {m, m2};
+  const double steps[2] = {step, crossing_step};
+  for (int s = 0; s < 2; ++s) {
+    if (steps[s] <= 0) continue;
+    const Vector3 along = cross(n, normals[s]);
+    // Within 1e-9 rad of parallel to the planes: no line crosses the face (or all of it lies in one).
+    if (length(along) < 1e-9) continue;
+    out[count++] = {normalize(along), normals[s], steps[s], spec.spacing / 2};
+  }
+  return count;
+}
+
 // The sets of lines face `n` gets: none, one, or one and its crossing set.
 int line_sets(const HatchSpec& spec, Vector3 n, LineSet out[2]) {
   double step = spec.spacing;
@@ -48,6 +69,7 @@ int line_sets(const HatchSpec& spec, Vector3 n, LineSet out[2]) {
     }
     if (spec.cross) crossing_step = step;
   }
+  if (spec.planes) return plane_sets(spec, n, step, crossing ? crossing_step : 0, out);
   const Vector3 h = face_horizontal(n), up = cross(n, h);
   const double a = spec.angle_deg * kPi / 180;
   const Vector3 along = h * std::cos(a) + up * std::sin(a);
@@ -94,6 +116,8 @@ Solid hatched(const Solid& solid, const HatchSpec& spec) {
     throw std::invalid_argument("the hatch spacing must be a positive number");
   if (spec.light && !(length(*spec.light) > 0 && std::isfinite(length(*spec.light))))
     throw std::invalid_argument("the light direction must not be the zero vector");
+  if (spec.planes && !(length(*spec.planes) > 0 && std::isfinite(length(*spec.planes))))
+    throw std::invalid_argument("the planes' normal must not be the zero vector");
   Solid out = solid;
   std::vector<Crossing> crossings;
   for (std::size_t f = 0; f < solid.faces.size(); ++f) {

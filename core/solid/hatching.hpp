@@ -26,6 +26,11 @@ struct HatchSpec {
   // `spacing`.
   std::optional<Vector3> light;
   bool cross = false;  // a second set at right angles on every hatched face, at the face's spacing
+  // Instead of `angle`: the lines are where parallel planes normal to this direction cut the faces,
+  // `spacing` apart in space (a face tilted to them gets its lines further apart). Every face shares the
+  // planes, so the lines run on unbroken from face to face — on a scan of small triangles, long curves
+  // instead of a dash a triangle. The crossing set is cut by planes normal to planes × z.
+  std::optional<Vector3> planes;
 };
 
 // How many lines hatching `solid` as `spec` lays at most (a line across a non-convex face may give
@@ -33,7 +38,8 @@ struct HatchSpec {
 std::size_t hatch_line_bound(const Solid& solid, const HatchSpec& spec);
 
 // `solid` with its hatch lines added (EdgeKind::Hatch, each on its face, two new vertices each).
-// Throws std::invalid_argument for a spacing that is not finite and positive or a zero light.
+// Throws std::invalid_argument for a spacing that is not finite and positive, or a zero light or planes
+// normal.
 Solid hatched(const Solid& solid, const HatchSpec& spec);
 
 }  // namespace hlr

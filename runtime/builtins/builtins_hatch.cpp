@@ -26,7 +26,8 @@ const ParamList kHatchParams = {
     optional("angle", kNumber, Value::number(45)),
     optional("light", kinds(ValueKind::Vector)),
     optional("cross", kinds(ValueKind::Bool), Value::boolean(false)),
-    optional("pen", kNumber)};
+    optional("pen", kNumber),
+    optional("planes", kinds(ValueKind::Vector))};
 
 void put_bits(double x, std::string& out) {
   char bytes[sizeof x];
@@ -46,11 +47,17 @@ std::string hatch_key(const HatchSpec& spec, int pen) {
     put_bits(spec.light->z, key);
   }
   key += spec.cross ? 'x' : '-';
+  key += spec.planes ? 's' : '-';
+  if (spec.planes) {
+    put_bits(spec.planes->x, key);
+    put_bits(spec.planes->y, key);
+    put_bits(spec.planes->z, key);
+  }
   key += std::to_string(pen);
   return key;
 }
 
-// hatch(object, spacing, angle: 45, light: none, cross: false, pen: none)
+// hatch(object, spacing, angle: 45, light: none, cross: false, pen: none, planes: none)
 Value hatch_(CallArgs& call) {
   const Bound b = call.bind(kHatchParams);
   HatchSpec spec;
@@ -65,6 +72,13 @@ Value hatch_(CallArgs& call) {
   }
   spec.cross = b.boolean(4);
   const int pen = b.present(5) ? b.whole(5, 1, kMaxPen) : 0;  // 0: keep the solid's (its drawing pen)
+  if (b.present(6)) {
+    if (b.given(2)) b.fail(6, "cannot go with angle: both say which way the lines run; give one of them");
+    const Vector3 normal = b.vector(6);
+    if (!(length(normal) > 0) || !std::isfinite(length(normal)))
+      b.fail(6, "must be the direction the planes are normal to, not the zero vector");
+    spec.planes = normal;
+  }
 
   // A solid is hatched in its own coordinates; the members of a group or list in the group's, each moved
   // there first, so that one light and one angle hold for all of them.
@@ -106,7 +120,7 @@ Value hatch_(CallArgs& call) {
 
 const BuiltinEntry kHatchBuiltins[] = {
     {"hatch",
-     "hatch(object, spacing, angle: 45, light: none, cross: false, pen: none)",
+     "hatch(object, spacing, angle: 45, light: none, cross: false, pen: none, planes: none)",
      hatch_,
      "A solid (or group) with parallel hatch lines laid on its faces, spacing apart (or shaded by light), "
      "drawn where visible in the hatch pen.",

@@ -7,6 +7,8 @@ here by hand, not by the engine:
     0.75, 1.25, 1.75 (half a spacing off the multiples) from x = 0 to 2, at z = 2, and nothing else shows;
   - the same box hatched at angle 90 seen from the front, with a taller plain box in front of x 0.6 … 1.4:
     of the upright lines x = 0.25 … 1.75 only the two outside it are drawn, whole;
+  - a cylinder cut by the planes z = 0.125 … 1.875: each cut's visible half runs across twelve faces and
+    is planned as one stroke the cylinder's width;
 and on every device the hatching keeps its pen and layer: JSON hatch_strokes and hatch_stroke_pens, the
 plotter SVG layer "3 hatch", HPGL's SP3; hidden hatch pieces are never drawn, not even with --hidden
 dashed. The REPL's :render writes the same hatching.
@@ -105,6 +107,26 @@ if layer.count("<path") != 2:
 hpgl = open(render("front", FRONT, out_ext="hpgl")).read()
 if "SP3" not in hpgl:
     fail("HPGL: the hatching's pen 3 is never selected")
+
+# ---- planes: lines that run on across faces are planned as one stroke ----
+RINGS = """draw hatch(cylinder(1, 2, sides: 24), 0.25, planes: (0, 0, 1), pen: 2)
+camera side = ortho(eye: (0, -10, 1), target: (0, 0, 1), height: 3)
+"""
+frame = json.load(open(render("rings", RINGS)))["frames"][0]
+pieces = hatch_segments(frame)
+heights = sorted({round(s["p"][0][2], 9) for s in pieces})
+if heights != [0.125 + 0.25 * k for k in range(8)] or any(not close(s["p"][0][2], s["p"][1][2]) for s in pieces):
+    fail(f"planes z = const should cut the cylinder's side at z = 0.125 ... 1.875, got {heights}")
+if len(pieces) < 8 * 10:
+    fail(f"each cut should cross the half of the 24 faces in view, got {len(pieces)} pieces")
+if len(frame["hatch_strokes"]) != 8:
+    fail(f"each cut's visible half, across 12 faces, should be one stroke: 8 strokes, got {len(frame['hatch_strokes'])}")
+outline = [p[0] for stroke in frame["strokes"] for p in stroke]
+for stroke in frame["hatch_strokes"]:
+    width = max(p[0] for p in stroke) - min(p[0] for p in stroke)
+    if abs(width - (max(outline) - min(outline))) > 0.05:
+        fail(f"a cut's stroke should span the cylinder's width on the page, {max(outline) - min(outline)} mm; "
+             f"spans {width} mm")
 
 # ---- the REPL ----
 out = os.path.join(work, "repl.json")

@@ -34,7 +34,11 @@ Scene hatched_scene() {
   HatchSpec plain;
   plain.spacing = 0.1;
   plain.angle_deg = 70;
-  add("torus", gen::torus({-0.6, 0.9, 0.1}, 0.6, 0.2, 16, 8, 30), plain);
+  HatchSpec sliced;  // lines that run on across faces
+  sliced.spacing = 0.08;
+  sliced.planes = Vector3{0.3, -0.5, 1};
+  sliced.light = Vector3{-1, 0, 1};
+  add("torus", gen::torus({-0.6, 0.9, 0.1}, 0.6, 0.2, 16, 8, 30), sliced);
   // Open and concave: a box without its top, hatched inside and out.
   add("tray", gen::open_box({-1.6, -1.2, -0.7}, {-0.6, -0.3, -0.2}), plain);
   return scene;

@@ -41,6 +41,14 @@ FaceIndex face_facing(const Solid& s, Vector3 n) {
   return kNoFace;
 }
 
+// Every end point of the hatch lines, exactly, and how many lines end there.
+std::map<std::tuple<double, double, double>, int> line_ends(const std::vector<HatchLine>& lines) {
+  std::map<std::tuple<double, double, double>, int> ends;
+  for (const HatchLine& l : lines)
+    for (const Point3 p : {l.a, l.b}) ++ends[{p.x, p.y, p.z}];
+  return ends;
+}
+
 TEST(Hatching, UnitBoxQuarterApartByHand) {
   // Spacing 0.25, offset half of it: on every face the lines lie at 0.125, 0.375, 0.625 and 0.875 across it,
   // from edge to edge. The top face's horizontal is x (it faces straight up), so at angle 0 its lines run
@@ -196,9 +204,7 @@ TEST(Hatching, CoplanarTrianglesShareTheirLinesEnds) {
   spec.spacing = 0.1;
   spec.angle_deg = 20;
   const auto lines = hatch_lines(hatched(tri, spec));
-  std::map<std::tuple<double, double, double>, int> ends;
-  for (const HatchLine& l : lines)
-    for (const Point3 p : {l.a, l.b}) ++ends[{p.x, p.y, p.z}];
+  const auto ends = line_ends(lines);
   // Every end inside a face (off the box's edges) is shared by exactly two pieces.
   int inner = 0;
   for (const auto& [p, n] : ends) {
@@ -210,6 +216,50 @@ TEST(Hatching, CoplanarTrianglesShareTheirLinesEnds) {
     EXPECT_EQ(n, 2) << x << " " << y << " " << z;
   }
   EXPECT_GT(inner, 30);
+}
+
+TEST(Hatching, PlanesCutABoxIntoRings) {
+  // Planes z = 0.125 … 0.875 cut the four walls of a unit box into four closed rings; the top and bottom,
+  // parallel to the planes, get none. Each ring's corners are found once, from the box's upright edges, so
+  // every end is shared by the two walls' lines exactly.
+  const Solid box = gen::box({0, 0, 0}, {1, 1, 1});
+  HatchSpec spec;
+  spec.spacing = 0.25;
+  spec.planes = Vector3{0, 0, 3};
+  const auto lines = hatch_lines(hatched(box, spec));
+  ASSERT_EQ(lines.size(), 16u);
+  std::set<double> zs;
+  for (const HatchLine& l : lines) {
+    EXPECT_EQ(l.a.z, l.b.z);
+    EXPECT_NEAR(distance(l.a, l.b), 1, 1e-15);
+    zs.insert(l.a.z);
+  }
+  EXPECT_EQ(zs, (std::set<double>{0.125, 0.375, 0.625, 0.875}));
+  const auto ends = line_ends(lines);
+  EXPECT_EQ(ends.size(), 16u);
+  for (const auto& [p, n] : ends) EXPECT_EQ(n, 2);
+}
+
+TEST(Hatching, PlanesRunUnbrokenAcrossACurvedMesh) {
+  // A sphere of 16 × 8 faces cut by tilted planes: each cut is a closed polygon across many faces, so every
+  // end of every line is the end of exactly one other, to the bit.
+  const Solid sphere = gen::sphere({0.3, -0.2, 0.1}, 1, 16, 8, 30);
+  HatchSpec spec;
+  spec.spacing = 0.1;
+  spec.planes = Vector3{0.2, 0.1, 1};
+  const auto lines = hatch_lines(hatched(sphere, spec));
+  EXPECT_GT(lines.size(), 200u);
+  for (const auto& [p, n] : line_ends(lines)) {
+    const auto [x, y, z] = p;
+    EXPECT_EQ(n, 2) << x << " " << y << " " << z;
+  }
+  // Each lies in its plane: 0.2x + 0.1y + z, over the normal's length, is (k + ½)·0.1.
+  const double len = std::sqrt(0.2 * 0.2 + 0.1 * 0.1 + 1);
+  for (const HatchLine& l : lines)
+    for (const Point3 p : {l.a, l.b}) {
+      const double c = (0.2 * p.x + 0.1 * p.y + p.z) / len / 0.1 - 0.5;
+      EXPECT_NEAR(c, std::round(c), 1e-9);
+    }
 }
 
 TEST(Hatching, BoundCountsEveryLine) {
@@ -230,6 +280,9 @@ TEST(Hatching, BadSpecsAreRefused) {
   EXPECT_THROW(hatched(box, spec), std::invalid_argument);
   spec.spacing = 1;
   spec.light = Vector3{0, 0, 0};
+  EXPECT_THROW(hatched(box, spec), std::invalid_argument);
+  spec.light.reset();
+  spec.planes = Vector3{0, 0, 0};
   EXPECT_THROW(hatched(box, spec), std::invalid_argument);
 }
 
