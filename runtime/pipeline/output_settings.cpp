@@ -175,6 +175,11 @@ std::shared_ptr<const Device> device_for(DeviceKind kind, const FrameScene& scen
       gcode.clip = d.clip;
       return make_gcode_device(gcode_plotter_for(scene, run), gcode);
     }
+    case DeviceKind::Dxf: {
+      DxfOptions dxf;
+      dxf.pens = pen_table_for(scene, d);
+      return make_dxf_device(dxf);
+    }
     case DeviceKind::Json:
     case DeviceKind::JsonLines: {
       JsonOptions json;

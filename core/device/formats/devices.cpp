@@ -26,6 +26,7 @@ std::optional<DeviceKind> device_kind_for(const fs::path& path) {
   if (ext == ".json") return DeviceKind::Json;
   if (ext == ".jsonl") return DeviceKind::JsonLines;
   if (ext == ".gcode" || ext == ".nc" || ext == ".ngc") return DeviceKind::Gcode;
+  if (ext == ".dxf") return DeviceKind::Dxf;
   return std::nullopt;
 }
 
@@ -47,6 +48,8 @@ const char* device_kind_name(DeviceKind kind) {
       return "JSON Lines";
     case DeviceKind::Gcode:
       return "G-code";
+    case DeviceKind::Dxf:
+      return "DXF";
   }
   return "?";
 }
@@ -56,7 +59,7 @@ bool one_frame_per_file(DeviceKind kind) {
 }
 
 const char* supported_extensions() {
-  return "pdf, svg, png, hpgl (or .plt), steps, json, jsonl, gcode (or .nc)";
+  return "pdf, svg, png, hpgl (or .plt), steps, json, jsonl, gcode (or .nc), dxf";
 }
 
 namespace {
@@ -293,8 +296,28 @@ class GcodeDevice : public OneFrameDevice {
   GcodeOptions o_;
 };
 
+// ---- DXF -------------------------------------------------------------------------------------------
+
+class DxfDevice : public OneFrameDevice {
+ public:
+  explicit DxfDevice(DxfOptions options) : o_(std::move(options)) {}
+  const char* name() const override { return "DXF"; }
+  DevicePlanning planning(double, double) const override {
+    DevicePlanning p = page_planning();
+    p.text_as_strokes = true;  // a CAD program or a cutter takes lines, not a font
+    return p;                  // hidden strokes stay whole: their layer's linetype dashes them
+  }
+  std::string page_bytes(const PlotPage& page) const override { return to_dxf(page, o_); }
+
+ private:
+  DxfOptions o_;
+};
+
 }  // namespace
 
+std::unique_ptr<Device> make_dxf_device(const DxfOptions& options) {
+  return std::make_unique<DxfDevice>(options);
+}
 std::unique_ptr<Device> make_gcode_device(const GcodeProfile& profile, const GcodeOptions& options) {
   return std::make_unique<GcodeDevice>(profile, options);
 }

@@ -4,6 +4,7 @@
 #include <memory>
 
 #include "core/device/formats/cairo_device.hpp"
+#include "core/device/formats/dxf_device.hpp"
 #include "core/device/formats/gcode_device.hpp"
 #include "core/device/formats/hpgl_device.hpp"
 #include "core/device/formats/json_device.hpp"
@@ -26,6 +27,9 @@ std::unique_ptr<Device> make_hpgl_device(const HpglProfile& profile, const HpglO
 std::unique_ptr<Device> make_step_device(const StepOptions& options = {});
 // hlrscript.lines/1, any number of frames; planned as the cairo devices are.
 std::unique_ptr<Device> make_json_device(const JsonOptions& options);
+// DXF for CAD programs and laser cutters (core/device/formats/dxf_device.hpp); planned as the cairo devices
+// are, the caption in single strokes, hidden strokes whole.
+std::unique_ptr<Device> make_dxf_device(const DxfOptions& options);
 // G-code for a GRBL pen plotter `profile`: planned on kGcodeGridMm from the machine's origin on the page,
 // with the profile's feeds and dwells for the time estimate.
 std::unique_ptr<Device> make_gcode_device(const GcodeProfile& profile, const GcodeOptions& options = {});

@@ -78,11 +78,11 @@ class Device {
 
 // The file types, by extension (any case): .pdf .svg .png .hpgl/.plt/.hpg .steps .json, JSON Lines
 // .jsonl, and G-code .gcode/.nc/.ngc.
-enum class DeviceKind { Pdf, Svg, Png, Hpgl, Steps, Json, JsonLines, Gcode };
+enum class DeviceKind { Pdf, Svg, Png, Hpgl, Steps, Json, JsonLines, Gcode, Dxf };
 std::optional<DeviceKind> device_kind_for(const std::filesystem::path& path);
 const char* device_kind_name(DeviceKind kind);  // "PDF", "SVG", ..., "plotter-steps", "JSON"
 bool one_frame_per_file(DeviceKind kind);
-// "pdf, svg, png, hpgl (or .plt), steps, json, jsonl, gcode (or .nc)": for messages.
+// "pdf, svg, png, hpgl (or .plt), steps, json, jsonl, gcode (or .nc), dxf": for messages.
 const char* supported_extensions();
 
 }  // namespace hlr
