@@ -49,6 +49,7 @@ const BuiltinTable& builtins() {
     register_animation_builtins(t);
     register_import_builtins(t);
     register_hatch_builtins(t);
+    register_boolean_builtins(t);
     return t;
   }();
   return table;

@@ -53,6 +53,7 @@ void register_shape_builtins(BuiltinTable& table);      // builtins_shapes.cpp: 
 void register_camera_builtins(BuiltinTable& table);
 void register_animation_builtins(BuiltinTable& table);  // builtins_animation.cpp: ease, track, spline, follow
 void register_hatch_builtins(BuiltinTable& table);   // builtins_hatch.cpp: hatch
+void register_boolean_builtins(BuiltinTable& table);  // builtins_booleans.cpp: union, difference, intersection
 void register_import_builtins(BuiltinTable& table);  // builtins_import.cpp: import  // builtins_cameras.cpp
 
 // ---- helpers shared by the modules ------------------------------------------------------------------

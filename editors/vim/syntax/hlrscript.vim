@@ -58,11 +58,11 @@ syn keyword hlrStatement at nextgroup=hlrPageWord skipwhite skipnl
 
 syn match hlrCall /\<\h\w*\ze\s*(/
 syn match hlrBuiltin /\<\%(abs\|acos\|adjust\|asin\|atan\|atan2\|box\|ceil\|clamp\|cone\|cos\|cross\|cube\|cylinder\)\>/
-syn match hlrBuiltin /\<\%(desens\|desens_carrier\|distance\|dodecahedron\|dot\|ease\|exp\|extrude\|floor\|follow\)\>/
-syn match hlrBuiltin /\<\%(group\|hatch\|heightfield\|hexahedron\|icosahedron\|identity\|import\|lblock\|len\|lerp\|log\)\>/
+syn match hlrBuiltin /\<\%(desens\|desens_carrier\|difference\|distance\|dodecahedron\|dot\|ease\|exp\|extrude\|floor\|follow\)\>/
+syn match hlrBuiltin /\<\%(group\|hatch\|heightfield\|hexahedron\|icosahedron\|identity\|import\|intersection\|lblock\|len\|lerp\|log\)\>/
 syn match hlrBuiltin /\<\%(lookat\|matrix\|max\|min\|mirror\|norm\|normalize\|octahedron\|orbit\|ortho\|place\|pow\)\>/
 syn match hlrBuiltin /\<\%(prism\|pyramid\|range\|rect\|regular\|revolve\|rotate\|round\|scale\|sin\|smoothstep\)\>/
-syn match hlrBuiltin /\<\%(sphere\|spline\|sqrt\|stairs\|str\|sweep\|tan\|tetrahedron\|torus\|track\|translate\|vec\)\>/
+syn match hlrBuiltin /\<\%(sphere\|spline\|sqrt\|stairs\|str\|sweep\|tan\|tetrahedron\|torus\|track\|translate\|union\|vec\)\>/
 syn match hlrConstant /\<pi\>/
 " Bound before each frame is evaluated.
 syn match hlrFrameVar /\<\%(frame\|frames\|t\|time\)\>/
