@@ -16,6 +16,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <iterator>
 #include <map>
 #include <numeric>
 #include <sstream>
@@ -147,14 +148,17 @@ std::size_t find(std::vector<std::size_t>& parent, std::size_t x) {
 // whose corner lies within rounding of its opposite side. Within the tolerance the solid builder judges by
 // (core/tolerance.hpp), such edges are collapsed and such caps flipped away, as long as the surface stays a
 // closed manifold (the link condition); whatever is left with no area at all goes too.
-void collapse_slivers(RoundedMesh& mesh) {
+// The diagonal of the mesh's box: the size the builder's tolerance is relative to.
+double extent_of(const RoundedMesh& mesh) {
   CGAL::Bbox_3 box;
   for (const auto v : mesh.vertices()) box += mesh.point(v).bbox();
-  const double extent =
-      std::sqrt(CGAL::square(box.xmax() - box.xmin()) + CGAL::square(box.ymax() - box.ymin()) +
-                CGAL::square(box.zmax() - box.zmin()));
+  return std::sqrt(CGAL::square(box.xmax() - box.xmin()) + CGAL::square(box.ymax() - box.ymin()) +
+                   CGAL::square(box.zmax() - box.zmin()));
+}
+
+void collapse_slivers(RoundedMesh& mesh) {
   // Twice the builder's tolerance: what it would call one point, or no area, never reaches it.
-  const double tol = 2 * Tolerance::for_extent(extent).length;
+  const double tol = 2 * Tolerance::for_extent(extent_of(mesh)).length;
   for (int pass = 0; pass < 8; ++pass) {
     bool changed = false;
     for (const auto e : mesh.edges()) {
@@ -195,7 +199,9 @@ void collapse_slivers(RoundedMesh& mesh) {
   mesh.collect_garbage();
 }
 
-Solid to_solid(const Mesh& mesh, double crease_angle_deg) {
+Solid to_solid(Mesh mesh, double crease_angle_deg) {
+  // Indices below run over the live elements only: the corefinement may leave removed ones behind.
+  mesh.collect_garbage();
   if (mesh.number_of_faces() == 0)
     throw std::runtime_error("the result is empty: the solids have nothing in common");
   // Triangles exactly in one plane, joined across their common edges: one face of the drawing.
@@ -213,41 +219,63 @@ Solid to_solid(const Mesh& mesh, double crease_angle_deg) {
   // Rounded to doubles, a sliver the corefinement cut may have no area left: collapse such triangles (their
   // shortest edge, or the longest one's far corner onto it) so that the surface stays closed.
   RoundedMesh rounded;
-  std::vector<RoundedMesh::Vertex_index> to_rounded(mesh.number_of_vertices());
-  for (const MeshVertex v : mesh.vertices()) {
-    const Exact::Point_3& p = mesh.point(v);
-    to_rounded[v.idx()] = rounded.add_vertex(
-        Rounded::Point_3(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())));
-  }
+  // Copied as a halfedge structure, not face by face: where the result touches itself at a vertex, adding
+  // its faces one at a time could meet a fan the mesh cannot link in that order.
+  std::vector<std::pair<Mesh::Face_index, RoundedMesh::Face_index>> faces;
+  CGAL::copy_face_graph(mesh, rounded,
+                        CGAL::parameters::face_to_face_output_iterator(std::back_inserter(faces)));
   auto plane_of = rounded.add_property_map<RoundedMesh::Face_index, std::size_t>("f:plane", 0).first;
-  for (const auto f : mesh.faces()) {
-    std::vector<RoundedMesh::Vertex_index> ring;
-    for (const MeshVertex v : CGAL::vertices_around_face(mesh.halfedge(f), mesh))
-      ring.push_back(to_rounded[v.idx()]);
-    const auto g = rounded.add_face(ring);
-    if (g == RoundedMesh::null_face()) throw std::runtime_error("the result is no closed surface");
-    plane_of[g] = find(group, f.idx());
-  }
+  for (const auto& [exact, copy] : faces) plane_of[copy] = find(group, exact.idx());
   collapse_slivers(rounded);
+  // Collapses round points where the result grazes itself can leave the mesh inconsistent; it is checked
+  // before anything reads it.
+  if (!CGAL::is_valid_polygon_mesh(rounded))
+    throw std::runtime_error(
+        "the result cannot be rounded to doubles without losing its shape: its parts "
+        "touch or graze each other closer than rounding can tell apart");
 
   SolidBuildOptions options;
   options.crease_angle_deg = crease_angle_deg;
   SolidBuilder builder(options);
   // Where the result touches itself at a point (two notches meeting at a corner), the mesh has one vertex
-  // per side of it; the solid has one vertex there, shared.
-  std::map<std::array<double, 3>, VertexIndex> at;
-  std::vector<VertexIndex> index(rounded.number_of_vertices());
+  // per side of it; the solid has one vertex there, shared — and so do points the rounding left closer than
+  // the builder tells apart (found in a grid of cells that size: a point's twin is in its cell or a
+  // neighbour).
+  const double tol = 2 * Tolerance::for_extent(extent_of(rounded)).length;
+  std::map<std::array<long long, 3>, std::vector<std::pair<Point3, VertexIndex>>> cells;
+  std::vector<VertexIndex> index(rounded.num_vertices());  // by index, removed ones included
   for (const auto v : rounded.vertices()) {
-    const Rounded::Point_3& p = rounded.point(v);
-    const auto [it, added] = at.try_emplace({p.x(), p.y(), p.z()}, 0);
-    if (added) it->second = builder.add_vertex(Point3{p.x(), p.y(), p.z()});
-    index[v.idx()] = it->second;
+    const Rounded::Point_3& r = rounded.point(v);
+    const Point3 p{r.x(), r.y(), r.z()};
+    const std::array<long long, 3> cell = {std::llround(p.x / tol), std::llround(p.y / tol),
+                                           std::llround(p.z / tol)};
+    bool found = false;
+    for (long long dx = -1; dx <= 1 && !found; ++dx)
+      for (long long dy = -1; dy <= 1 && !found; ++dy)
+        for (long long dz = -1; dz <= 1 && !found; ++dz) {
+          const auto it = cells.find({cell[0] + dx, cell[1] + dy, cell[2] + dz});
+          if (it == cells.end()) continue;
+          for (const auto& [q, i] : it->second)
+            if (distance(p, q) <= tol) {
+              index[v.idx()] = i;
+              found = true;
+              break;
+            }
+        }
+    if (!found) {
+      index[v.idx()] = builder.add_vertex(p);
+      cells[cell].emplace_back(p, index[v.idx()]);
+    }
   }
   std::vector<std::size_t> face_plane;
   for (const auto f : rounded.faces()) {
     std::vector<std::uint32_t> ring;
-    for (const auto v : CGAL::vertices_around_face(rounded.halfedge(f), rounded))
+    for (const auto v : CGAL::vertices_around_face(rounded.halfedge(f), rounded)) {
+      if (v.idx() >= index.size() || rounded.is_removed(v))
+        throw std::runtime_error("the result cannot be rounded to doubles without losing its shape");
       ring.push_back(index[v.idx()]);
+    }
+    if (ring[0] == ring[1] || ring[1] == ring[2] || ring[2] == ring[0]) continue;  // shrunk to a line
     builder.add_indexed_face_loop(ring);
     face_plane.push_back(plane_of[f]);
   }
@@ -333,18 +361,18 @@ Solid boolean_solid(BooleanOp op, const std::vector<const Solid*>& operands) {
   for (const Solid* s : operands) crease = std::max(crease, s->crease_angle_deg);
   if (op == BooleanOp::Union) return to_solid(union_of(operands, 0, operands.size()), crease);
   Mesh result = to_mesh(*operands[0], 0);
-  if (operands.size() == 1) return to_solid(result, crease);
+  if (operands.size() == 1) return to_solid(std::move(result), crease);
   if (op == BooleanOp::Difference) {
     // The first minus the others is the first minus their union: one cut instead of one per solid.
     Mesh cut = union_of(operands, 1, operands.size() - 1);
     combine(op, result, cut);
-    return to_solid(result, crease);
+    return to_solid(std::move(result), crease);
   }
   for (std::size_t i = 1; i < operands.size(); ++i) {
     Mesh next = to_mesh(*operands[i], i);
     combine(op, result, next);
   }
-  return to_solid(result, crease);
+  return to_solid(std::move(result), crease);
 }
 
 }  // namespace hlr::stdlib

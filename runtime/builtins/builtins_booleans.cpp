@@ -58,6 +58,7 @@ Value boolean_of(CallArgs& call, BooleanOp op) {
       names.push_back(m.name);
     }
   }
+  if (operands.empty()) call.fail_call(name + "() needs at least one solid; the lists given are empty");
   // The result's faces are not known before it is made; the operands' (cut into a few pieces each) bound
   // what a frame may build.
   call.budget().charge_faces_built(call.site().span, 2 * faces);
