@@ -74,6 +74,11 @@ struct Tolerance {
   // orbit()'s near depth per unit of ρ: Albers never clips at the eye, so as close to it as is safe.
   static constexpr double kOrbitNearFraction = 1e-6;
 
+  // ---- Hatching (core/solid/hatching.cpp): a cross product of unit vectors shorter than this (an angle in
+  // radians) leaves no direction — a face level to it has x for its horizontal, a face parallel to the
+  // cutting planes no lines.
+  static constexpr double kHatchDirection = 1e-9;
+
   // ---- Solid generators (stdlib), relative to the generator's coordinates or sizes.
   // Smallest feature (profile size, grid step, ring spacing) per unit of the largest coordinate: 100 ×
   // kRelative, so the feature's vertices stay apart by far more than the builder's coincidence tolerance.

@@ -6,6 +6,8 @@
 #include <stdexcept>
 #include <vector>
 
+#include "core/tolerance.hpp"
+
 namespace hlr {
 namespace {
 
@@ -24,8 +26,8 @@ struct LineSet {
 Vector3 face_horizontal(Vector3 n) {
   const Vector3 h = cross(Vector3{0, 0, 1}, n);
   const double len = length(h);
-  // Below this the face is level to within 1e-9 rad: its horizontal is any direction, take x.
-  if (len < 1e-9) return Vector3{1, 0, 0};
+  // Level within the tolerance: its horizontal is any direction, take x.
+  if (len < Tolerance::kHatchDirection) return Vector3{1, 0, 0};
   return h / len;
 }
 
@@ -36,15 +38,15 @@ Vector3 face_horizontal(Vector3 n) {
 int plane_sets(const HatchSpec& spec, Vector3 n, double step, double crossing_step, LineSet out[2]) {
   const Vector3 m = normalize(*spec.planes);
   Vector3 m2 = cross(m, Vector3{0, 0, 1});
-  m2 = length(m2) < 1e-9 ? Vector3{1, 0, 0} : normalize(m2);
+  m2 = length(m2) < Tolerance::kHatchDirection ? Vector3{1, 0, 0} : normalize(m2);
   int count = 0;
   const Vector3 normals[2] = {m, m2};
   const double steps[2] = {step, crossing_step};
   for (int s = 0; s < 2; ++s) {
     if (steps[s] <= 0) continue;
     const Vector3 along = cross(n, normals[s]);
-    // Within 1e-9 rad of parallel to the planes: no line crosses the face (or all of it lies in one).
-    if (length(along) < 1e-9) continue;
+    // Parallel to the planes within the tolerance: no line crosses the face (or all of it lies in one).
+    if (length(along) < Tolerance::kHatchDirection) continue;
     out[count++] = {normalize(along), normals[s], steps[s], spec.spacing / 2};
   }
   return count;

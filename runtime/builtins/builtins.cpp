@@ -9,6 +9,7 @@
 #include "runtime/base/eval_error.hpp"
 #include "runtime/builtins/solid_cache.hpp"
 #include "runtime/values/format_value.hpp"
+#include "runtime/values/placement.hpp"
 
 namespace hlr::runtime {
 
@@ -88,6 +89,24 @@ Value finite_number(const CallArgs& call, double x) {
 Value finite_vector(const CallArgs& call, Vector3 v) {
   if (!is_finite(to_point(v))) not_finite(call, std::isnan(v.x) || std::isnan(v.y) || std::isnan(v.z));
   return Value::vector(v);
+}
+
+std::vector<PlacedSolid> solids_where_placed(const CallArgs& call, const Value& value,
+                                             const lang::SourceSpan& span) {
+  std::vector<PlacedSolid> members =
+      value.is(ValueKind::Solid)
+          ? std::vector<PlacedSolid>{{value.as_solid().solid, value.as_solid().name, Affine3::identity()}}
+          : flatten_placed(value, Affine3::identity(), span, call.site().function + "()", call.budget());
+  const Affine3 identity = Affine3::identity();
+  for (PlacedSolid& m : members) {
+    const Affine3 t = m.worldFromObject;
+    if (t.m == identity.m && t.t == identity.t) continue;
+    const std::shared_ptr<const Solid> source = m.solid;
+    m.solid = SolidCache::shared().placed(
+        source, t, [&] { return std::make_shared<const Solid>(source->transformed(t)); });
+    m.worldFromObject = identity;
+  }
+  return members;
 }
 
 Value generated_solid(const CallArgs& call, std::size_t faces, const std::function<Solid()>& make) {

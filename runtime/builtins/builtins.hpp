@@ -52,8 +52,9 @@ void register_shape_builtins(BuiltinTable& table);      // builtins_shapes.cpp: 
 
 void register_camera_builtins(BuiltinTable& table);
 void register_animation_builtins(BuiltinTable& table);  // builtins_animation.cpp: ease, track, spline, follow
-void register_hatch_builtins(BuiltinTable& table);   // builtins_hatch.cpp: hatch
-void register_boolean_builtins(BuiltinTable& table);  // builtins_booleans.cpp: union, difference, intersection
+void register_hatch_builtins(BuiltinTable& table);      // builtins_hatch.cpp: hatch
+void register_boolean_builtins(
+    BuiltinTable& table);                            // builtins_booleans.cpp: union, difference, intersection
 void register_import_builtins(BuiltinTable& table);  // builtins_import.cpp: import  // builtins_cameras.cpp
 
 // ---- helpers shared by the modules ------------------------------------------------------------------
@@ -85,6 +86,12 @@ Solid with_contours(Solid solid, bool smooth);
 void for_each_sublist(const CallArgs& call, const Bound& b, std::size_t i, std::string_view param,
                       const std::string& item, const std::string& expected,
                       const std::function<void(const Bound& one, std::size_t k)>& visit);
+
+// The solids of `value` (a solid, group or list), each moved to where it is placed and given back with the
+// identity: the process's cached copy for a placement seen before (SolidCache::placed). What hatch() and the
+// booleans work on, in the coordinates of the value given; anything else is flatten_placed's error at `span`.
+std::vector<PlacedSolid> solids_where_placed(const CallArgs& call, const Value& value,
+                                             const lang::SourceSpan& span);
 
 Value generated_solid(const CallArgs& call, std::size_t faces, const std::function<Solid()>& make);
 

@@ -1,7 +1,6 @@
 // union(), difference(), intersection(): booleans of solids (stdlib/booleans.hpp). Each argument is a solid,
 // a group or a list of them (placed solids are taken where they are placed) and stands for the union of
 // what it holds; the result is a solid in those coordinates, cached across frames like a generator's.
-#include <cstring>
 #include <string>
 
 #include "runtime/builtins/builtins.hpp"
@@ -13,25 +12,6 @@ namespace hlr::runtime {
 namespace {
 
 using stdlib::BooleanOp;
-
-// One argument's solids, each moved to where it is placed (the cache's copy when it has one).
-std::vector<PlacedSolid> argument_solids(CallArgs& call, const Arg& arg) {
-  std::vector<PlacedSolid> members =
-      arg.value.is(ValueKind::Solid)
-          ? std::vector<PlacedSolid>{{arg.value.as_solid().solid, arg.value.as_solid().name,
-                                      Affine3::identity()}}
-          : flatten_placed(arg.value, Affine3::identity(), arg.span, call.site().function + "()",
-                           call.budget());
-  for (PlacedSolid& m : members) {
-    const Affine3 t = m.worldFromObject;
-    if (t.m == Affine3::identity().m && t.t == Affine3::identity().t) continue;
-    const std::shared_ptr<const Solid> source = m.solid;
-    m.solid = SolidCache::shared().placed(
-        source, t, [&] { return std::make_shared<const Solid>(source->transformed(t)); });
-    m.worldFromObject = Affine3::identity();
-  }
-  return members;
-}
 
 Value boolean_of(CallArgs& call, BooleanOp op) {
   const std::string name = call.site().function;
@@ -51,7 +31,7 @@ Value boolean_of(CallArgs& call, BooleanOp op) {
       call.fail(arg.span, "bad argument " + std::to_string(i + 1) + " to " + name +
                               "(): expected a solid, a group or a list of them, got " +
                               kind_with_article(arg.value.kind()));
-    for (PlacedSolid& m : argument_solids(call, arg)) {
+    for (PlacedSolid& m : solids_where_placed(call, arg.value, arg.span)) {
       faces += m.solid->faces.size();
       operands.push_back(std::move(m.solid));
       from.push_back(i);

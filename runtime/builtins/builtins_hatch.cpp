@@ -1,7 +1,6 @@
 // hatch(): shading for plotters, lines laid on the faces of solids (core/solid/hatching.hpp). This file
 // checks the arguments, bounds the lines before any is laid, and caches what it lays across frames.
 #include <cmath>
-#include <cstring>
 #include <string>
 
 #include "core/format_number.hpp"
@@ -9,7 +8,6 @@
 #include "core/solid/hatching.hpp"
 #include "runtime/builtins/builtins.hpp"
 #include "runtime/builtins/solid_cache.hpp"
-#include "runtime/values/placement.hpp"
 
 namespace hlr::runtime {
 namespace {
@@ -28,12 +26,6 @@ const ParamList kHatchParams = {
     optional("cross", kinds(ValueKind::Bool), Value::boolean(false)),
     optional("pen", kNumber),
     optional("planes", kinds(ValueKind::Vector))};
-
-void put_bits(double x, std::string& out) {
-  char bytes[sizeof x];
-  std::memcpy(bytes, &x, sizeof x);
-  out.append(bytes, sizeof x);
-}
 
 // The exact key of a hatching, for the cache.
 std::string hatch_key(const HatchSpec& spec, int pen) {
@@ -82,20 +74,8 @@ Value hatch_(CallArgs& call) {
 
   // A solid is hatched in its own coordinates; the members of a group or list in the group's, each moved
   // there first, so that one light and one angle hold for all of them.
-  std::vector<PlacedSolid> members;
   const bool single = b.value(0).is(ValueKind::Solid);
-  if (single)
-    members.push_back({b.value(0).as_solid().solid, b.value(0).as_solid().name, Affine3::identity()});
-  else
-    members = flatten_placed(b.value(0), Affine3::identity(), b.span(0), "hatch()", call.budget());
-  for (PlacedSolid& m : members)
-    if (!(m.worldFromObject.m == Affine3::identity().m && m.worldFromObject.t == Affine3::identity().t)) {
-      const Affine3 t = m.worldFromObject;
-      const std::shared_ptr<const Solid> source = m.solid;
-      m.solid = SolidCache::shared().placed(
-          source, t, [&] { return std::make_shared<const Solid>(source->transformed(t)); });
-      m.worldFromObject = Affine3::identity();
-    }
+  std::vector<PlacedSolid> members = solids_where_placed(call, b.value(0), b.span(0));
 
   double lines = 0;
   for (const PlacedSolid& m : members) lines += static_cast<double>(hatch_line_bound(*m.solid, spec));

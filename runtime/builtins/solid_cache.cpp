@@ -7,13 +7,13 @@
 
 namespace hlr::runtime {
 
-namespace {
-
 void put_bits(double x, std::string& out) {
   char bytes[sizeof x];
   std::memcpy(bytes, &x, sizeof x);
   out.append(bytes, sizeof x);
 }
+
+namespace {
 
 bool put_value(const Value& v, std::string& out) {
   out += static_cast<char>(v.kind());

@@ -59,6 +59,9 @@ class SolidCache {
   std::unique_ptr<State> s_;
 };
 
+// Appends the bits of x to a cache key (exact: no two doubles give the same bytes).
+void put_bits(double x, std::string& out);
+
 // The exact text key of a value, or nullopt when it has none (solids, functions, cameras, transforms).
 std::optional<std::string> value_key(const Value& value);
 
