@@ -110,6 +110,10 @@ struct Tolerance {
   static constexpr double kPlanGridExtent = 1e-9;
   // Slack on the reach of a merge tolerance across a piece: a vertex exactly at the tolerance is on it.
   static constexpr double kPlanReachSlack = 1e-9;
+  // A hidden piece lying on a visible one (or a deeper level's on a shallower one) within this many page
+  // mm is not drawn there (core/plan/hidden_precedence.hpp): far below any pen's step (0.025 mm), far
+  // above the rounding of the layout (~1e-12 mm), so lines that coincide in an orthographic view do.
+  static constexpr double kCoincidentLineMm = 1e-3;
 
   // ---- Devices.
   // HPGL: a sheet edge within this many plotter units of a whole unit is that unit (mm / unit is rarely

@@ -243,6 +243,10 @@ std::string dump(const Stmt& stmt) {
           [](const PlotterStmt& s) {
             return "(plotter " + s.name.text + " (entries" + arguments_text(s.entries) + "))";
           },
+          [](const ViewStmt& s) {
+            return "(view " + s.name.text + " " + dump(*s.camera) + " at page " + dump(*s.point) +
+                   " (options" + arguments_text(s.options) + "))";
+          },
       },
       stmt.node);
 }
@@ -256,7 +260,7 @@ std::string dump(const Script& script) {
 const char* statement_keyword(const Stmt& stmt) {
   static constexpr const char* names[] = {"solid",   "let",    "def",     "return", "for",   "if",
                                           "draw",    "camera", "animate", "output", "paper", "style",
-                                          "include", "pen",    "plotter", "label"};
+                                          "include", "pen",    "plotter", "label",  "view"};
   static_assert(std::size(names) == std::variant_size_v<decltype(Stmt::node)>);
   return names[stmt.node.index()];
 }

@@ -217,6 +217,12 @@ struct LabelStmt {  // label TEXT at [page] POINT [size: MM] [pen N]
   ExprPtr size;          // null when absent
   std::optional<PenClause> pen;
 };
+struct ViewStmt {  // view NAME = CAMERA at page (X, Y) [KEY: EXPR ...]
+  Name name;
+  ExprPtr camera;
+  ExprPtr point;
+  std::vector<Argument> options;  // as written; the runtime checks them
+};
 struct PlotterStmt {  // plotter NAME { KEY: EXPR ... }
   Name name;
   std::vector<Argument> entries;  // each labelled with its key, as written
@@ -225,7 +231,7 @@ struct PlotterStmt {  // plotter NAME { KEY: EXPR ... }
 struct Stmt {
   SourceSpan span;
   std::variant<SolidStmt, LetStmt, DefStmt, ReturnStmt, ForStmt, IfStmt, DrawStmt, CameraStmt, AnimateStmt,
-               OutputStmt, PaperStmt, StyleStmt, IncludeStmt, PenStmt, PlotterStmt, LabelStmt>
+               OutputStmt, PaperStmt, StyleStmt, IncludeStmt, PenStmt, PlotterStmt, LabelStmt, ViewStmt>
       node;
 };
 

@@ -366,6 +366,7 @@ template <> struct action<g::for_variable> : push_name {};
 template <> struct action<g::camera_name> : push_name {};
 template <> struct action<g::paper_size> : push_name {};
 template <> struct action<g::plotter_name> : push_name {};
+template <> struct action<g::view_name> : push_name {};
 template <> struct action<g::style_property> : push_name {};
 template <> struct action<g::style_word> : push_name {};
 template <> struct action<g::style_levels_word> : push_name {};
@@ -598,6 +599,24 @@ struct action<g::label_stmt> {
       if (it != end && holds<PenClause>(*(end - 1))) label.pen = take<PenClause>(*--end);
       if (it != end) label.size = box(take<Expr>(*it++));
       return label;
+    });
+  }
+};
+
+template <>
+struct action<g::view_option> : make_argument {};
+
+template <>
+struct action<g::view_stmt> {
+  template <typename Input>
+  static void apply(const Input& in, ParseState& s) {
+    make_statement(span_of(in, s), s, [](auto it, auto end) {
+      ViewStmt view;
+      view.name = take<Name>(*it++);
+      view.camera = box(take<Expr>(*it++));
+      view.point = box(take<Expr>(*it++));
+      for (; it != end; ++it) view.options.push_back(take<Argument>(*it));
+      return view;
     });
   }
 };

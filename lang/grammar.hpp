@@ -152,6 +152,7 @@ struct key_plotter : key< TAO_PEGTL_STRING( "plotter" ) > {};
 struct key_label : key< TAO_PEGTL_STRING( "label" ) > {};
 struct key_size : key< TAO_PEGTL_STRING( "size" ) > {};
 struct key_page : key< TAO_PEGTL_STRING( "page" ) > {};
+struct key_view : key< TAO_PEGTL_STRING( "view" ) > {};
 struct solid_word : sor< key_vertex, key_face, key_hole, key_line > {};
 
 struct name : seq< not_at< reserved >, identifier > {};
@@ -507,12 +508,24 @@ struct label_size : seq< key_size, sp, one< ':' >, sp, must< label_size_value > 
 struct label_stmt : seq< key_label, sp, must< label_text >, sp, must< label_at >, sp, label_where,
                          opt< sp, label_size >, opt< sp, pen_clause > > {};
 
+// view NAME = CAMERA at page (X, Y) [KEY: EXPR ...]: the camera's drawing placed on the sheet, its picture
+// origin at page millimetres (X, Y); options (scale:, label:, hidden:) follow as `key: value`, no commas.
+struct view_name : name {};
+struct view_camera : seq< expression > {};
+struct view_at : key_at {};
+struct view_page : key_page {};
+struct view_point : seq< expression > {};
+struct view_option_value : seq< expression > {};
+struct view_option : seq< arg_label, sp, must< view_option_value > > {};
+struct view_stmt : seq< key_view, sp, must< view_name >, sp, must< camera_eq >, sp, must< view_camera >, sp,
+                        must< view_at >, sp, must< view_page >, sp, must< view_point >, star< sp, view_option > > {};
+
 struct include_path : seq< string_lit > {};
 struct include_stmt : seq< key_include, sp, must< include_path > > {};
 
 struct statement : sor< solid_stmt, let_stmt, def_stmt, return_stmt, for_stmt, if_stmt, draw_stmt, camera_stmt,
                         animate_stmt, output_stmt, paper_stmt, style_stmt, include_stmt, pen_stmt, plotter_stmt,
-                        label_stmt > {};
+                        label_stmt, view_stmt > {};
 
 // ---- the script ---------------------------------------------------------------------------------
 

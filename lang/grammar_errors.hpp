@@ -153,9 +153,16 @@ HLR_ERROR(label_text, "expected the text after 'label', as in 'label \"bridge\" 
 HLR_ERROR(label_at, "expected 'at' and where the label goes, as in 'label \"bridge\" at (0, 0, 2)'");
 HLR_ERROR(label_point, "expected a point after 'at', as in 'label \"bridge\" at (0, 0, 2)' or 'at page (20, 15)'");
 HLR_ERROR(label_size_value, "expected the letters' height in millimetres after 'size:', as in 'size: 4'");
+HLR_ERROR(view_name, "expected a name after 'view', as in 'view front = side at page (80, 60)'");
+HLR_ERROR(view_camera, "expected a camera after '=', as in 'view front = side at page (80, 60)'");
+HLR_HINT(view_camera, "a camera declared by 'camera NAME = ...', or one made here: lookat(...), ortho(...)");
+HLR_ERROR(view_at, "expected 'at page (X, Y)' after the view's camera, as in 'view front = side at page (80, 60)'");
+HLR_ERROR(view_page, "expected 'page' after 'at': a view goes at a page point, as in 'at page (80, 60)'");
+HLR_ERROR(view_point, "expected the page point after 'at page', millimetres from the top-left corner, as in '(80, 60)'");
+HLR_ERROR(view_option_value, "expected a value after the option's name and ':', as in 'scale: 0.5'");
 HLR_ERROR(include_path, "expected a quoted file name after 'include', as in 'include \"parts.hls\"'");
 HLR_ERROR(top_statement, "expected a statement");
-HLR_HINT(top_statement, "statements start with solid, let, def, for, if, draw, camera, animate, output, paper, style, pen, plotter, label or include");
+HLR_HINT(top_statement, "statements start with solid, let, def, for, if, draw, camera, animate, output, paper, style, pen, plotter, label, view or include");
 
 // clang-format on
 

@@ -9,9 +9,14 @@ out=${1:-docs/images}
 hlrscript=${HLRSCRIPT:-build/runtime/hlrscript}
 mkdir -p "$out/tutorial" "$out/gallery"
 
-# picture SCRIPT TARGET: one frame, 160 × 110 mm at 60 dpi (about 380 × 260 pixels, 10-30 KB).
+# picture SCRIPT TARGET: one frame, 160 × 110 mm at 60 dpi (about 380 × 260 pixels, 10-30 KB); a sheet of
+# views (its views are placed in page millimetres) on its own paper with its frame, at 24 dpi.
 picture() {
   local frames=() count
+  if grep -q '^view ' "$1"; then
+    "$hlrscript" "$1" -o "$2" --dpi 24 --line-width 0.5 >/dev/null 2>&1 || { echo "docs-images: $1 failed" >&2; return 1; }
+    return
+  fi
   count=$("$hlrscript" check "$1" 2>/dev/null | sed -n 's/.*ok: \([0-9]*\) frames\{0,1\} evaluated.*/\1/p')
   [ "${count:-1}" -gt 1 ] && frames=(--frames $((count / 2)))
   "$hlrscript" "$1" "${frames[@]}" -o "$2" --dpi 60 --paper 160x110 --margin 4 --plain --line-width 0.35 \

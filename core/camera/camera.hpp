@@ -32,6 +32,9 @@ struct Camera {
   // picture_frame): the picture spans ±window_half along the drawing area's shorter side. 1 for lookat
   // (the fov) and ortho (the height); 90 for orbit (Albers' drawing window, 180 rows of the CGA screen).
   double window_half = 1;
+  // Perspective: the depth of the point looked at (lookat's target), where a view on a sheet takes its
+  // scale (core/device/page/sheet_layout.hpp); 0 when the camera does not know one.
+  double target_depth = 0;
 
   // World-space eye position (perspective) and unit viewing direction (both projections).
   Point3 eye_world() const;

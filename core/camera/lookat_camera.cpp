@@ -51,6 +51,7 @@ Camera lookat_camera(const LookatParameters& p) {
                       "must be a positive depth, or 0 for the default " + CameraError::got(p.near));
   c.focal = 1 / std::tan(p.fov_deg * std::numbers::pi / 360);
   c.offset = {};
+  c.target_depth = distance(p.target, p.eye);
   // Default near plane: close enough never to cut a visible object, far enough to keep 1/depth tame.
   c.near_depth = p.near > 0 ? p.near : Tolerance::kLookatNearFraction * distance(p.target, p.eye);
   return c;

@@ -38,7 +38,7 @@ const StatementHelp kStatements[] = {
      "Makes the script a sequence: it runs once per frame with frame, t and time bound."},
     {"output", "output \"name-{frame:03}.pdf\" [paper SIZE ...] [plotter NAME]",
      "Where the drawing goes (.pdf .svg .png .hpgl .gcode .steps .json .jsonl .dxf); -o overrides it."},
-    {"paper", "paper SIZE [landscape|portrait] [(margin: MM, scale: MM_PER_UNIT)]",
+    {"paper", "paper SIZE [landscape|portrait] [(margin: MM, scale: MM_PER_UNIT, fit: F, title: TEXT)]",
      "The page: A4, A3, letter, ... or custom (width: W, height: H)."},
     {"style", "style hidden dashed|off|levels N [pen P]",
      "Draws hidden lines dashed, or leaves them out; levels N draws those behind 1..N surfaces, each level "
@@ -49,6 +49,9 @@ const StatementHelp kStatements[] = {
     {"plotter", "plotter NAME { KEY: EXPR ... }", "Describes a pen plotter for HPGL or G-code output."},
     {"label", "label TEXT at POINT | at page (X, Y) [size: MM] [pen N]",
      "Writes single-stroke text from a world point (hidden by the solids in front) or a page point in mm."},
+    {"view", "view NAME = CAMERA at page (X, Y) [scale: MM_PER_UNIT] [label: TEXT] [hidden: BOOL]",
+     "Places a camera's drawing on the sheet, its target at page (X, Y) mm; a script with views draws them "
+     "all on each page, each with its own hidden lines, labelled, with a title block."},
 };
 
 const BuiltinFunction* builtin_function(const std::string& name) {

@@ -19,105 +19,12 @@
 #include "core/limits.hpp"
 #include "runtime/eval/eval_detail.hpp"
 #include "runtime/eval/evaluator.hpp"
+#include "runtime/eval/option_list.hpp"
 #include "runtime/values/format_value.hpp"
 
 namespace hlr::runtime {
 
 namespace {
-
-// ---- option lists --------------------------------------------------------------------------------
-
-struct OptionSpec {
-  std::string_view name;
-  ValueKind kind;
-  std::string_view alias = {};  // another spelling of the same option ("color")
-};
-
-struct OptionList {
-  std::string who;      // "paper 'A4': ", prefixed to every message
-  std::string noun;     // "option", or "key" for a plotter's entries
-  std::string example;  // "margin: 10", for an option without a name
-  std::string hint;     // what the options are
-  std::vector<OptionSpec> specs;
-};
-
-struct GivenOption {
-  Value value;
-  lang::SourceSpan span;  // the whole `name: value`
-  std::string written;    // the name as written ("color" for colour)
-};
-using GivenOptions = std::map<std::string, GivenOption, std::less<>>;
-
-std::string kind_wanted(ValueKind kind) {
-  switch (kind) {
-    case ValueKind::Number:
-      return "a number";
-    case ValueKind::Bool:
-      return "true or false";
-    case ValueKind::String:
-      return "a string";
-    default:
-      return kind_with_article(kind);
-  }
-}
-
-// Checks names and kinds, evaluating the values in written order; by canonical name.
-template <typename Eval>
-GivenOptions check_options(const std::vector<lang::Argument>& args, const OptionList& list, Eval&& eval) {
-  GivenOptions given;
-  for (const lang::Argument& arg : args) {
-    if (!arg.label)
-      fail(arg.span, list.who + "each " + list.noun + " needs a name, as in '" + list.example + "'",
-           list.hint);
-    const std::string& name = arg.label->text;
-    const auto spec = std::find_if(list.specs.begin(), list.specs.end(),
-                                   [&](const OptionSpec& s) { return s.name == name || s.alias == name; });
-    if (spec == list.specs.end()) {
-      std::vector<std::string> names;
-      for (const OptionSpec& s : list.specs) names.emplace_back(s.name);
-      const std::string guess = did_you_mean(name, names);
-      fail(arg.span, list.who + "unknown " + list.noun + " '" + name + "'",
-           guess.empty() ? list.hint : guess + " " + list.hint);
-    }
-    const std::string canonical(spec->name);
-    if (const auto first = given.find(canonical); first != given.end()) {
-      lang::Diagnostic d;
-      d.span = arg.span;
-      d.message = list.who + list.noun + " '" + name + "' is given twice";
-      if (first->second.written != name) d.message += " (as '" + first->second.written + "' before)";
-      d.hint = list.hint;
-      d.notes.push_back({first->second.span, "first given here"});
-      throw EvalError(std::move(d));
-    }
-    Value value = eval(*arg.value);
-    if (!value.is(spec->kind))
-      fail(arg.span,
-           list.who + list.noun + " '" + name + "' must be " + kind_wanted(spec->kind) + ", got " +
-               kind_with_article(value.kind()),
-           list.hint);
-    given.emplace(canonical, GivenOption{std::move(value), arg.span, name});
-  }
-  return given;
-}
-
-const GivenOption* find(const GivenOptions& given, std::string_view name) {
-  const auto it = given.find(name);
-  return it == given.end() ? nullptr : &it->second;
-}
-
-// A number option within a range: `ok(x)` says whether x is allowed, `range` says what is.
-template <typename Ok>
-double number_in(const GivenOption& option, const OptionList& list, Ok&& ok, const std::string& range) {
-  const double x = option.value.as_number();
-  if (!std::isfinite(x) || !ok(x))
-    fail(option.span,
-         list.who + list.noun + " '" + option.written + "' must be " + range + " (got " +
-             format_for_message(x) + ")",
-         list.hint);
-  return x;
-}
-
-bool whole(double x) { return std::floor(x) == x; }
 
 bool equal_ignoring_case(std::string_view a, std::string_view b) {
   return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) {
@@ -130,8 +37,9 @@ bool equal_ignoring_case(std::string_view a, std::string_view b) {
 std::string paper_hint() {
   return "the paper options are margin: millimetres from 0, leaving room on the page, scale: "
          "millimetres per drawing unit above 0 (instead of the camera's field of view), and fit: \"camera\" "
-         "(the default: the camera's view fills the page) or \"drawing\" (what is drawn fills it); 'paper "
-         "custom' also takes width: and height: in millimetres, up to " +
+         "(the default: the camera's view fills the page) or \"drawing\" (what is drawn fills it), and "
+         "title: the text of a sheet's title block (a script with views); 'paper custom' also takes width: "
+         "and height: in millimetres, up to " +
          format_for_message(kMaxPaperSideMm);
 }
 
@@ -304,6 +212,7 @@ void Evaluator::set_paper(const lang::PaperSpec& paper, const lang::Stmt& stmt, 
                         {{"margin", ValueKind::Number},
                          {"scale", ValueKind::Number},
                          {"fit", ValueKind::String},
+                         {"title", ValueKind::String},
                          {"width", ValueKind::Number},
                          {"height", ValueKind::Number}}};
   const GivenOptions given =
@@ -359,6 +268,7 @@ void Evaluator::set_paper(const lang::PaperSpec& paper, const lang::Stmt& stmt, 
           "\"drawing\" fits whatever is drawn to the page");
     setting.fit = chosen;
   }
+  if (const GivenOption* title = find(given, "title")) setting.title = title->value.as_string();
   out_.paper = std::move(setting);
 }
 

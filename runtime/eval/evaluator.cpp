@@ -103,6 +103,7 @@ Evaluator::Flow Evaluator::exec(const lang::Stmt& stmt, const ScopePtr& scope) {
           [&](const lang::PenStmt& s) { return exec_pen(s, stmt, scope), Flow::Next; },
           [&](const lang::PlotterStmt& s) { return exec_plotter(s, stmt, scope), Flow::Next; },
           [&](const lang::LabelStmt& s) { return exec_label(s, stmt, scope), Flow::Next; },
+          [&](const lang::ViewStmt& s) { return exec_view(s, stmt, scope), Flow::Next; },
       },
       stmt.node);
 }

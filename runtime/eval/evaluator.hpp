@@ -78,6 +78,7 @@ class Evaluator {
   void exec_pen(const lang::PenStmt& pen, const lang::Stmt& stmt, const ScopePtr& scope);
   void exec_plotter(const lang::PlotterStmt& plotter, const lang::Stmt& stmt, const ScopePtr& scope);
   void exec_label(const lang::LabelStmt& label, const lang::Stmt& stmt, const ScopePtr& scope);
+  void exec_view(const lang::ViewStmt& view, const lang::Stmt& stmt, const ScopePtr& scope);  // eval_views.cpp
   // `pen N`: a whole number from 1 to 255, else an error at `expr`
   int eval_pen_number(const lang::Expr& expr, const ScopePtr& scope);
 

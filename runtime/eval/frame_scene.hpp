@@ -48,6 +48,7 @@ struct PaperSetting {  // paper A4 landscape [(margin: MM, scale: MM_PER_UNIT)],
   std::optional<double> margin_mm;
   std::optional<double> mm_per_unit;  // explicit scale instead of fit-to-page
   std::optional<PageFit> fit;         // fit: "camera" | "drawing"
+  std::optional<std::string> title;   // title: a sheet's title block; else the script's file name
   lang::SourceSpan span;
 };
 
@@ -79,6 +80,17 @@ struct LabelSetting {
   lang::SourceSpan span;  // the statement
 };
 
+// view NAME = CAMERA at page (X, Y) [scale: S] [label: TEXT] [hidden: BOOL]: the camera's drawing on the
+// sheet (runtime/pipeline/sheet_render.hpp), its picture origin — the camera's target — at page (X, Y) mm.
+struct ViewSetting {
+  NamedCamera camera;                 // the view's name, its camera and the statement's span
+  Point2 at_mm;                       // page millimetres from the top-left corner, y down
+  std::optional<double> mm_per_unit;  // scale:; else the paper's, else the sheet's fitted scale
+  std::string label;                  // label:; else the name in capitals ("": none)
+  std::optional<bool> hidden;         // hidden:; else the sheet's style
+  lang::SourceSpan name_span;
+};
+
 struct FrameScene {
   FrameTime time;
   Scene scene;                       // drawn objects in draw order, names unique ("box", "box#2")
@@ -94,6 +106,7 @@ struct FrameScene {
   std::vector<PenSetting> pens;                // pen statements, each pen number at most once
   std::vector<PlotterSetting> plotters;        // declared plotters, names unique
   std::vector<LabelSetting> labels;            // in statement order
+  std::vector<ViewSetting> views;              // in statement order, names unique; none: one camera's page
   std::vector<lang::Diagnostic> warnings;
   std::uint64_t steps = 0;
   std::size_t faces_built = 0;

@@ -160,7 +160,10 @@ class Resolver {
                      optional(s.transform, scope);
                      if (s.pen) expr(*s.pen->number, scope);
                    },
-                   [&](const lang::CameraStmt& s) { expr(*s.value, scope); },
+                   [&](const lang::CameraStmt& s) {
+                     expr(*s.value, scope);
+                     cameras_.insert(s.name.text);
+                   },
                    [&](const lang::AnimateStmt& s) {
                      expr(*s.frames, scope);
                      optional(s.fps, scope);
@@ -185,6 +188,15 @@ class Resolver {
                      options(s.options, scope);
                    },
                    [&](const lang::PlotterStmt& s) { options(s.entries, scope); },
+                   [&](const lang::ViewStmt& s) {
+                     // A bare name may be a camera declared before (the evaluator looks there when the
+                     // name is bound to nothing).
+                     const auto* ref = std::get_if<lang::NameRef>(&s.camera->node);
+                     if (!ref || lookup(ref->name, scope) || !cameras_.count(ref->name))
+                       expr(*s.camera, scope);
+                     expr(*s.point, scope);
+                     options(s.options, scope);
+                   },
                    [&](const lang::LabelStmt& s) {
                      expr(*s.text, scope);
                      expr(*s.point, scope);
@@ -350,6 +362,7 @@ class Resolver {
   bool uses_frames_ = false;
   bool missing_include_ = false;     // an include that cannot be read or parsed: names may come from it
   std::set<std::string> unknown_;    // names reported as unknown
+  std::set<std::string> cameras_;    // declared by camera statements so far: a view may name one
   std::set<lang::FileId> included_;  // files whose statements were walked, each once as the evaluator does
   std::vector<lang::Diagnostic> errors_;
 };

@@ -22,6 +22,7 @@
 #include "runtime/base/interrupt.hpp"
 #include "runtime/base/limits.hpp"
 #include "runtime/pipeline/frame_labels.hpp"
+#include "runtime/pipeline/sheet_render.hpp"
 
 namespace hlr::runtime {
 
@@ -125,7 +126,27 @@ void run_frame(const Program& program, int frame, double fps, const PipelineOpti
   };
   const auto start = Clock::now();
   FrameResult result;
-  if (!has_world_labels(scene.labels)) {
+  std::optional<SheetDrawing> sheet;
+  if (settings.sheet) {
+    // Labels at world points belong to one camera's picture; a sheet has several.
+    for (const LabelSetting& label : scene.labels)
+      if (!label.on_page)
+        fail(label.span, "on a sheet of views, a label goes at a page point",
+             "write 'label ... at page (X, Y)' in millimetres from the page's top-left corner");
+    sheet = render_sheet(scene, settings.plot.spec, options.run.device.decorations, settings.hidden, hlr,
+                         [&](const Camera& view_camera, const HlrOptions& options) {
+                           FrameResult view;
+                           try {
+                             view = render_frame(scene.scene, view_camera, options);
+                           } catch (const FrameTimedOut&) {
+                             out_of_time("the hidden lines");
+                           }
+                           return view;
+                         });
+    result.segments = std::move(sheet->segments);
+    result.stats = sheet->stats;
+    settings.hidden = settings.plot.hidden = r.hidden = sheet->hidden;
+  } else if (!has_world_labels(scene.labels)) {
     render(scene.scene, result);
   } else {
     // Labels are sized on the page, so the layout comes first: the camera's frame, or (fitting the
@@ -147,7 +168,11 @@ void run_frame(const Program& program, int frame, double fps, const PipelineOpti
     settings.plot.extent = extent;
   }
   r.render_seconds = seconds_since(start);
-  warn_about_view(scene, *settings.camera, camera, job.view_warnings);
+  if (settings.sheet)
+    for (const ViewSetting& v : scene.views)
+      warn_about_view(scene, v.camera, v.camera.camera, job.view_warnings);
+  else
+    warn_about_view(scene, *settings.camera, camera, job.view_warnings);
   // Each piece costs the plan and the device more than the engine: a runaway count stops here.
   if (result.segments.size() > limits.segments)
     fail(settings.camera->span,
@@ -164,7 +189,20 @@ void run_frame(const Program& program, int frame, double fps, const PipelineOpti
   frame_out.segments = &result.segments;
   frame_out.object_names = &r.object_names;
   frame_out.hidden = settings.hidden;
-  frame_out.plot = plot_page(result.segments, camera.frame, settings.caption, settings.plot);
+  if (sheet) {
+    SheetTitle title;
+    title.framed = options.run.device.decorations;
+    title.title = scene.paper && scene.paper->title ? *scene.paper->title
+                                                    : fs::path(options.run.title).filename().string();
+    title.scale = sheet->scale_text;
+    frame_out.plot = plot_sheet(result.segments, sheet->views, title, settings.plot);
+    frame_out.views = &sheet->views;
+    for (lang::Diagnostic& d :
+         sheet_warnings(scene, settings.plot.spec, frame_out.plot.view_boxes, title.framed))
+      job.view_warnings.push_back(std::move(d));
+  } else {
+    frame_out.plot = plot_page(result.segments, camera.frame, settings.caption, settings.plot);
+  }
   if (Clock::now() > scene.deadline) out_of_time("the pen plan");
   r.plan = frame_out.plot.stats;
   r.visible_segments = frame_out.plot.visible_segments;

@@ -17,6 +17,7 @@ namespace {
 std::string camera_list(const FrameScene& scene) {
   std::string out;
   for (const NamedCamera& c : scene.cameras) out += (out.empty() ? "" : ", ") + c.name;
+  for (const ViewSetting& v : scene.views) out += (out.empty() ? "view " : ", view ") + v.camera.name;
   return out;
 }
 
@@ -222,7 +223,7 @@ PageSpec page_spec_for(const FrameScene& scene, const DeviceOptions& d) {
 
 const NamedCamera& choose_camera(const FrameScene& scene, const std::optional<std::string>& wanted,
                                  const std::string& script_name) {
-  if (scene.cameras.empty()) {
+  if (scene.cameras.empty() && scene.views.empty()) {
     const std::string hint =
         "add one, for example: camera main = lookat(eye: (30, 20, 15), target: (0, 0, 0))";
     // At what is drawn, when something is: that is what the camera is missing for.
@@ -230,9 +231,11 @@ const NamedCamera& choose_camera(const FrameScene& scene, const std::optional<st
       fail(*scene.first_draw, "the script draws this but declares no camera to look at it", hint);
     throw RunError(script_name + ": the script declares no camera", hint, 65);
   }
-  if (!wanted) return scene.cameras.back();
+  if (!wanted) return scene.views.empty() ? scene.cameras.back() : scene.views.front().camera;
   for (const NamedCamera& c : scene.cameras)
     if (c.name == *wanted) return c;
+  for (const ViewSetting& v : scene.views)  // one view of a sheet, drawn alone on its page
+    if (v.camera.name == *wanted) return v.camera;
   throw RunError("--camera " + *wanted + ": " + script_name + " declares no camera named '" + *wanted + "'",
                  "its cameras: " + camera_list(scene), 64);
 }
@@ -241,6 +244,7 @@ FrameSettings resolve_target(const FrameScene& scene, std::size_t index, const R
                              const Program& program) {
   FrameSettings s;
   s.camera = &choose_camera(scene, run.camera, program.main().source->name());
+  s.sheet = !scene.views.empty() && !run.camera;
   s.hidden = run.hidden.value_or(scene.hidden.value_or(HiddenStyle::off()));
   // --levels N keeps the script's hidden pen, whose last level's pen must exist: said at the statement.
   if (s.hidden.counts_levels() && scene.hidden_pen && *scene.hidden_pen + s.hidden.levels - 1 > kMaxPen)
@@ -287,7 +291,7 @@ void resolve_device(const FrameScene& scene, const RunSettings& run, FrameSettin
   plot.hidden_pen = scene.hidden_pen;
   plot.hidden = s.hidden;
   if (planning.hidden_as_dashes) plot.hidden_dashes = run.device.dash;  // unset with --dash solid
-  s.caption = caption_for(scene, *s.camera, run);
+  if (!s.sheet) s.caption = caption_for(scene, *s.camera, run);         // a sheet has its title block
 }
 
 }  // namespace hlr::runtime

@@ -26,7 +26,8 @@ struct RunSettings {
 };
 
 struct FrameSettings {
-  const NamedCamera* camera = nullptr;  // into the frame's scene
+  const NamedCamera* camera = nullptr;  // into the frame's scene (a sheet: its first view's)
+  bool sheet = false;                   // the frame's views on one sheet (runtime/pipeline/sheet_render.hpp)
   // The camera with its picture frame on this page (core/device/page/page_layout.hpp framed_camera): what the
   // engine clips to and the devices lay out. Set by resolve_device().
   Camera camera_on_page;
@@ -41,7 +42,8 @@ struct FrameSettings {
 // taking precedence.
 PageSpec page_spec_for(const FrameScene& scene, const DeviceOptions& d);
 
-// The camera a frame is drawn with: `wanted` if given, else the last declared. Throws RunError.
+// The camera a frame is drawn with: `wanted` (a camera's or a view's name) if given, else the first view
+// when there are views (the sheet), else the last camera declared. Throws RunError.
 const NamedCamera& choose_camera(const FrameScene& scene, const std::optional<std::string>& wanted,
                                  const std::string& script_name);
 

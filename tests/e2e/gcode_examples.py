@@ -160,7 +160,78 @@ def json_segments(doc, origin):
     return out
 
 
+def merge_collinear(segs):
+    """Segments of one pen that continue one another in a straight line through a point no other segment
+    of that pen touches, as one: two plans on different grids may keep or drop such a point (where a closed
+    stroke starts, or a node snapped on one grid only)."""
+    segs = [(pen, tuple(a), tuple(b)) for pen, a, b in segs if math.dist(a, b) > TOL]
+
+    def node(pen, p):
+        return (pen, round(p[0] / GRID), round(p[1] / GRID))
+
+    alive = set(range(len(segs)))
+    at = {}
+    for i, (pen, a, b) in enumerate(segs):
+        at.setdefault(node(pen, a), set()).add(i)
+        at.setdefault(node(pen, b), set()).add(i)
+    for n in list(at):
+        ends = at[n]
+        if len(ends) != 2:
+            continue
+        i, j = sorted(ends)
+        if i == j:
+            continue
+        pen, a, b = segs[i]
+        _, c, d = segs[j]
+        # Orient both through the shared point: i arrives at it, j leaves it.
+        if node(pen, a) == n:
+            a, b = b, a
+        if node(pen, d) == n:
+            c, d = d, c
+        u, v = (b[0] - a[0], b[1] - a[1]), (d[0] - c[0], d[1] - c[1])
+        lu, lv = math.hypot(*u), math.hypot(*v)
+        if abs(u[0] * v[1] - u[1] * v[0]) > TOL * max(lu, lv) or u[0] * v[0] + u[1] * v[1] <= 0:
+            continue
+        segs[i] = (pen, a, d)
+        alive.discard(j)
+        at[n] = set()
+        far = at[node(pen, d)]
+        far.discard(j)
+        far.add(i)
+    return [segs[i] for i in sorted(alive)]
+
+
+def split_at_nodes(segs):
+    """Each segment cut where another segment of its pen ends on it: a line one plan draws through a
+    T-junction and the other stops and restarts at is the same line."""
+    cell = 1.0
+    nodes = {}
+    for pen, a, b in segs:
+        for p in (a, b):
+            nodes.setdefault((pen, math.floor(p[0] / cell), math.floor(p[1] / cell)), set()).add(p)
+    out = []
+    for pen, a, b in segs:
+        length = math.dist(a, b)
+        u = ((b[0] - a[0]) / length, (b[1] - a[1]) / length)
+        cuts = {}
+        x0, x1 = sorted((a[0], b[0]))
+        y0, y1 = sorted((a[1], b[1]))
+        for i in range(math.floor((x0 - TOL) / cell), math.floor((x1 + TOL) / cell) + 1):
+            for j in range(math.floor((y0 - TOL) / cell), math.floor((y1 + TOL) / cell) + 1):
+                for p in nodes.get((pen, i, j), ()):
+                    t = (p[0] - a[0]) * u[0] + (p[1] - a[1]) * u[1]
+                    off = abs((p[0] - a[0]) * u[1] - (p[1] - a[1]) * u[0])
+                    if TOL < t < length - TOL and off <= TOL:
+                        cuts.setdefault(round(t / GRID), p)  # the node itself: it lies on both files' grid
+        points = [a] + [cuts[k] for k in sorted(cuts)] + [b]
+        out += [(pen, points[i - 1], points[i]) for i in range(1, len(points))]
+    return out
+
+
 def compare(name, gcode_segs, json_segs):
+    gcode_segs = split_at_nodes(merge_collinear(gcode_segs))
+    json_segs = split_at_nodes(merge_collinear(json_segs))
+
     def index(segs):
         d = {}
         for pen, a, b in segs:

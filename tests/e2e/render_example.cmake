@@ -71,7 +71,18 @@ foreach(svg IN LISTS svgs)
   endif()
 endforeach()
 
-# A4 landscape (every example's paper) at 40 dpi: 297 mm and 210 mm → 468 × 331 pixels (rounded).
+# A4 landscape (every example's paper but the A3 sheets') at 40 dpi: 297 mm and 210 mm → 468 × 331 pixels
+# (rounded); A3 landscape, 420 mm and 297 mm → 661 × 468.
+file(READ "${SCRIPT}" script_text)
+if(script_text MATCHES "\npaper A3 landscape")
+  set(png_w 661)
+  set(png_h 468)
+  set(png_paper "A3 landscape")
+else()
+  set(png_w 468)
+  set(png_h 331)
+  set(png_paper "A4 landscape")
+endif()
 execute_process(COMMAND "${HLRSCRIPT}" "${SCRIPT}" -o "${dir}/${stem}-{frame:03}.png" --dpi 40
                 WORKING_DIRECTORY "${dir}" RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err TIMEOUT 600)
 if(NOT rc EQUAL 0)
@@ -90,8 +101,8 @@ foreach(png IN LISTS pngs)
   endif()
   math(EXPR w "0x${CMAKE_MATCH_1}")
   math(EXPR h "0x${CMAKE_MATCH_2}")
-  if(NOT w EQUAL 468 OR NOT h EQUAL 331)
-    message(FATAL_ERROR "${png}: expected 468 x 331 pixels (A4 landscape at 40 dpi), got ${w} x ${h}")
+  if(NOT w EQUAL png_w OR NOT h EQUAL png_h)
+    message(FATAL_ERROR "${png}: expected ${png_w} x ${png_h} pixels (${png_paper} at 40 dpi), got ${w} x ${h}")
   endif()
 endforeach()
 

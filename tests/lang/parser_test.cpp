@@ -433,6 +433,26 @@ TEST(Parser, Plotters) {
   EXPECT_EQ(std::string(statement_keyword(script.statements[0])), "plotter");
 }
 
+TEST(Parser, Views) {
+  EXPECT_EQ(ast("view front = side at page (80, 60)"), "(view front side at page (vec 80 60 0) (options))");
+  EXPECT_EQ(
+      ast("view iso = lookat(eye: e, target: t) at page (1, 2) scale: 0.5 label: \"ISO\" hidden: false"),
+      "(view iso (call lookat eye:e target:t) at page (vec 1 2 0) (options scale:0.5 label:\"ISO\" "
+      "hidden:false))");
+  // Options end where the next statement starts; `view` stays a name elsewhere.
+  EXPECT_EQ(dump(parse_ok("view a = c at page (1, 2) scale: 2\nview b = c at page (3, 4)\nlet view = 1")),
+            "(view a c at page (vec 1 2 0) (options scale:2))\n(view b c at page (vec 3 4 0) (options))\n(let "
+            "view 1)\n");
+  const std::string text = "view top = plan at page (100, 150) scale: 10";
+  const Script script = parse_ok(text);
+  const auto& view = std::get<ViewStmt>(script.statements[0].node);
+  EXPECT_EQ(span_text(text, view.name.span), "top");
+  EXPECT_EQ(span_text(text, view.camera->span), "plan");
+  ASSERT_EQ(view.options.size(), 1U);
+  EXPECT_EQ(span_text(text, view.options[0].span), "scale: 10");
+  EXPECT_EQ(std::string(statement_keyword(script.statements[0])), "view");
+}
+
 TEST(Parser, NewlinesAreWhitespace) {
   const Script a = parse_ok("draw a draw b let c = 1");
   const Script b = parse_ok("draw a\ndraw b\nlet c =\n  1");

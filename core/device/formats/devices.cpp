@@ -237,8 +237,13 @@ class JsonDevice : public Device {
     JsonOptions o = o_;
     o.include_hidden = o_.include_hidden || frame.hidden.drawn();
     o.levels = o.levels || frame.hidden.counts_levels();
-    const JsonFrame f{frame.frame,     frame.time,          *frame.camera,
-                      *frame.segments, *frame.object_names, frame.plot};
+    const JsonFrame f{frame.frame,
+                      frame.time,
+                      *frame.camera,
+                      *frame.segments,
+                      *frame.object_names,
+                      frame.plot,
+                      frame.views ? *frame.views : std::vector<SheetView>{}};
     EncodedFrame out;
     out.bytes = json_frame_text(f, o);
     out.file_head = json_document_head(frame.plot.page, o_);

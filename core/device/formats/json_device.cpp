@@ -119,13 +119,20 @@ class FrameText {
     w_.integer(f_.frame);
     w_.member("time", indent, false);
     w_.number(f_.time, "time");
-    if (o_.parts.camera) {
-      w_.member("camera", indent, false);
-      camera(indent);
-    }
-    if (o_.parts.layout) {
-      w_.member("layout", indent, false);
-      layout();
+    if (!f_.views.empty()) {
+      if (o_.parts.camera || o_.parts.layout) {
+        w_.member("views", indent, false);
+        views(indent);
+      }
+    } else {
+      if (o_.parts.camera) {
+        w_.member("camera", indent, false);
+        camera(f_.camera, indent);
+      }
+      if (o_.parts.layout) {
+        w_.member("layout", indent, false);
+        layout(f_.plot.layout);
+      }
     }
     if (o_.parts.segments) {
       w_.member("segments", indent, false);
@@ -160,8 +167,37 @@ class FrameText {
   }
 
  private:
-  void camera(int indent) {
-    const Camera& c = f_.camera;
+  // A sheet's views, each {"name", "label", "camera", "layout"} as the parts ask.
+  void views(int indent) {
+    std::string& out = w_.out();
+    out += '[';
+    for (std::size_t i = 0; i < f_.views.size(); ++i) {
+      const SheetView& v = f_.views[i];
+      if (i > 0) out += ',';
+      w_.line(indent + 2);
+      out += '{';
+      w_.member("name", indent + 4, true);
+      w_.string(v.name, "a view's name");
+      w_.member("label", indent + 4, false);
+      w_.string(v.label, "a view's label");
+      w_.member("mm_per_world_unit", indent + 4, false);
+      w_.number(v.mm_per_world_unit, "a view's scale");
+      if (o_.parts.camera) {
+        w_.member("camera", indent + 4, false);
+        camera(v.camera, indent + 4);
+      }
+      if (o_.parts.layout) {
+        w_.member("layout", indent + 4, false);
+        layout(v.layout);
+      }
+      w_.line(indent + 2);
+      out += '}';
+    }
+    w_.line(indent);
+    out += ']';
+  }
+
+  void camera(const Camera& c, int indent) {
     Point3 eye;
     Vector3 direction;
     try {
@@ -217,8 +253,7 @@ class FrameText {
     out += '}';
   }
 
-  void layout() {
-    const PageLayout& layout = f_.plot.layout;
+  void layout(const PageLayout& layout) {
     w_.out() += '{';
     w_.leaf_member("mm_per_unit", true);
     w_.number(layout.scale, "layout scale");
@@ -243,7 +278,10 @@ class FrameText {
     std::string& out = w_.out();
     out += '[';
     bool first = true;
-    for (const VisibleSegment& s : f_.segments) {
+    std::size_t view = 0;
+    for (std::size_t i = 0; i < f_.segments.size(); ++i) {
+      const VisibleSegment& s = f_.segments[i];
+      while (view + 1 < f_.views.size() && i >= f_.views[view].end_segment) ++view;
       if (s.hidden && !o_.include_hidden) continue;
       if (!first) out += ',';
       first = false;
@@ -270,6 +308,10 @@ class FrameText {
         if (s.hatch) out += ",\"hatch\":true";
       }
       out += s.hidden ? ",\"hidden\":true" : ",\"hidden\":false";
+      if (!f_.views.empty()) {
+        out += ",\"view\":";
+        w_.integer(static_cast<long long>(view));
+      }
       if (s.hidden && o_.levels) {
         out += ",\"level\":";
         w_.integer(s.level);

@@ -9,9 +9,13 @@
 //                           "near_depth": n (perspective only), "frame": [xmin,ymin,xmax,ymax] (if any),
 //                           "view_from_world": {"m": [[..],[..],[..]], "t": [..]}},
 //                "layout": {"mm_per_unit": s, "origin_mm": [x,y]},
+//                — or, for a sheet of views, instead of camera and layout:
+//                "views": [{"name": "front", "label": "FRONT", "mm_per_world_unit": 0.5,
+//                            "camera": {...}, "layout": {...}}, ...],
 //                "segments": [{"p": [[x,y,z],[x,y,z]], "s": [[u,v],[u,v]], "object": "name",
 //                              "edge": i | "other": "name" | "contour": f, "hatch": true (hatch lines),
-//                              "hidden": false, "level": k (hidden, levels)}],
+//                              "hidden": false, "level": k (hidden, levels),
+//                              "view": i (a sheet: the index of its view in "views")}],
 //                "strokes": [[[x_mm,y_mm], ...], ...],
 //                "stroke_pens": [1, ...] (the pen of each stroke),
 //                "hatch_strokes": [...], "hatch_stroke_pens": [...] (only when the frame has hatching),
@@ -77,6 +81,7 @@ struct JsonFrame {
   std::vector<VisibleSegment> segments;
   std::vector<std::string> object_names;  // indexed by VisibleSegment::object (and ::other)
   PagePlot plot;                          // the frame laid out on its page and pen-planned
+  std::vector<SheetView> views;           // a sheet's views; empty for a page of one camera
 };
 
 // Which of a frame's members are written.

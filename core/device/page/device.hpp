@@ -42,6 +42,9 @@ struct DeviceFrame {
   const std::vector<std::string>* object_names = nullptr;  // by VisibleSegment::object
   HiddenStyle hidden;  // JSON lists hidden pieces when drawn(), with their levels when counted
   PagePlot plot;
+  // A sheet of views (runtime/pipeline/sheet_render.hpp): each view's camera, layout and share of
+  // `segments`; null or empty for a page of one camera.
+  const std::vector<SheetView>* views = nullptr;
 };
 
 // A frame's share of a file, made by encode() on any thread.

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "core/camera/camera.hpp"
 #include "core/device/page/hidden_style.hpp"
 #include "core/device/page/page_layout.hpp"
 #include "core/device/page/plot_page.hpp"
@@ -62,6 +63,9 @@ struct PagePlot {
   std::size_t visible_segments = 0;  // visible pieces given (before snapping and merging)
   // Drawn by occlusion level: [k] the hidden pieces of level k given (index 0 unused); else empty.
   std::vector<std::size_t> level_pieces;
+  // A sheet (plot_sheet): each view on the page, mm — its camera frame, else the bounds of what it draws,
+  // with its label; empty for a view that draws nothing.
+  std::vector<Rect2> view_boxes;
 };
 
 // Fits the drawing (the camera frame when there is one, else the pieces) to the page, maps every piece
@@ -69,5 +73,27 @@ struct PagePlot {
 // a pen outside 1..255 (a hidden level's pen included).
 PagePlot plot_page(const std::vector<VisibleSegment>& segments, const std::optional<Rect2>& frame,
                    std::string caption, const PagePlotOptions& options);
+
+// One view of a sheet (core/device/page/sheet_layout.hpp): a camera's drawing at its own place and scale.
+struct SheetView {
+  std::string name;
+  Camera camera;                                   // as the engine drew it
+  PageLayout layout;                               // picture to page
+  double mm_per_world_unit = 1;                    // its scale (at the target's depth in perspective)
+  std::size_t first_segment = 0, end_segment = 0;  // its pieces: [first, end) of the frame's segments
+  std::string label;                               // written under the drawing; empty: none
+};
+
+// The sheet's frame and title block, drawn as strokes in pen 1 (so plotters draw them too).
+struct SheetTitle {
+  bool framed = true;  // false (--plain): neither frame nor title block
+  std::string title;
+  std::string scale;  // "1:2"
+};
+
+// A sheet: every view's pieces laid out by its own layout, each view's label under it, the frame and title
+// block, planned as one page. `options.extent` and the caption are not used. Throws as plot_page() does.
+PagePlot plot_sheet(const std::vector<VisibleSegment>& segments, const std::vector<SheetView>& views,
+                    const SheetTitle& title, const PagePlotOptions& options);
 
 }  // namespace hlr

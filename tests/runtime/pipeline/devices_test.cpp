@@ -141,7 +141,8 @@ void expect_plottable(const std::string& text, const HpglProfile& p, const HpglP
 class EveryExample : public ::testing::TestWithParam<Example> {};
 
 // Every example × every built-in profile × A4 and A3 landscape (where the profile takes the paper) and
-// A4 portrait: one HPGL file per frame, every one within the plotter's reach.
+// A4 portrait: one HPGL file per frame, every one within the plotter's reach. A sheet of views is placed in
+// millimetres on its own paper (landscape, A3 or A4): it is plotted on that paper only.
 TEST_P(EveryExample, PlotsWithinEveryProfilesReach) {
   const Example& e = GetParam();
   const test::TempDir dir(current_test_name());
@@ -153,9 +154,13 @@ TEST_P(EveryExample, PlotsWithinEveryProfilesReach) {
     double w, h;  // the page as drawn
   };
   const Paper papers[] = {{"A4", false, 297, 210}, {"A3", false, 420, 297}, {"A4", true, 210, 297}};
+  const std::string text = read_text(script);
+  const bool sheet = text.find("\nview ") != std::string::npos;
+  const std::string sheet_paper = text.find("\npaper A3 landscape") != std::string::npos ? "A3" : "A4";
   int plotted = 0;
   for (const HpglProfile& p : builtin_hpgl_profiles()) {
     for (const Paper& paper : papers) {
+      if (sheet && (paper.portrait || paper.name != sheet_paper)) continue;
       const std::string what = p.name + " " + paper.name + (paper.portrait ? " portrait" : " landscape");
       const fs::path sub = dir.path() / (p.name + "-" + paper.name + (paper.portrait ? "p" : "l"));
       fs::create_directories(sub);
@@ -185,8 +190,9 @@ TEST_P(EveryExample, PlotsWithinEveryProfilesReach) {
       ++plotted;
     }
   }
-  // hp7475a, hp7550, roland-dxy and generic take both sizes; hp7440a only A4: 4 × 3 + 2.
-  EXPECT_EQ(plotted, 14);
+  // hp7475a, hp7550, roland-dxy and generic take both sizes; hp7440a only A4: 4 × 3 + 2. A sheet: 4 on
+  // A3, 5 on A4.
+  EXPECT_EQ(plotted, !sheet ? 14 : sheet_paper == "A3" ? 4 : 5);
 }
 
 std::string example_test_name(const ::testing::TestParamInfo<Example>& info) {

@@ -1,0 +1,95 @@
+// `view NAME = CAMERA at page (X, Y) [scale: S] [label: TEXT] [hidden: BOOL]`: a camera's drawing placed on
+// the sheet. The pipeline lays the views out and draws them (runtime/pipeline/sheet_render.hpp); here they
+// are only checked and recorded.
+#include <cctype>
+#include <cmath>
+
+#include "core/limits.hpp"
+#include "runtime/eval/evaluator.hpp"
+#include "runtime/eval/option_list.hpp"
+
+namespace hlr::runtime {
+
+namespace {
+
+const OptionList& view_options() {
+  static const OptionList list{
+      "",
+      "option",
+      "scale: 0.5",
+      "a view's options are scale: millimetres per drawing unit above 0 (else the paper's scale:, else "
+      "one scale fitted to the sheet), label: the text under it (\"\" for none; else its name in capitals) "
+      "and hidden: true or false (its hidden lines drawn or not, whatever the style)",
+      {{"scale", ValueKind::Number}, {"label", ValueKind::String}, {"hidden", ValueKind::Bool}}};
+  return list;
+}
+
+std::string capitals(const std::string& name) {
+  std::string out = name;
+  for (char& c : out) c = c == '_' ? ' ' : static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+  return out;
+}
+
+}  // namespace
+
+void Evaluator::exec_view(const lang::ViewStmt& view, const lang::Stmt& stmt, const ScopePtr& scope) {
+  for (const ViewSetting& v : out_.views)
+    if (v.camera.name == view.name.text) {
+      lang::Diagnostic d;
+      d.span = view.name.span;
+      d.message = "view '" + view.name.text + "' is already declared";
+      d.hint = "give each view its own name";
+      d.notes.push_back({v.name_span, "the first 'view " + v.camera.name + "' is here"});
+      throw EvalError(std::move(d));
+    }
+  ViewSetting setting;
+  setting.camera.name = view.name.text;
+  setting.camera.span = stmt.span;
+  setting.name_span = view.name.span;
+
+  // A camera value, or the name of a camera declared before (when the name is bound to no camera).
+  const Camera* declared = nullptr;
+  if (const auto* ref = std::get_if<lang::NameRef>(&view.camera->node)) {
+    const Binding* bound = scope->find(ref->name);
+    if (!bound || !bound->value.is(ValueKind::Camera))
+      for (const NamedCamera& c : out_.cameras)
+        if (c.name == ref->name) declared = &c.camera;
+  }
+  if (declared) {
+    setting.camera.camera = *declared;
+  } else {
+    const Value camera = eval(*view.camera, scope);
+    if (!camera.is(ValueKind::Camera))
+      fail(view.camera->span, "a view needs a camera, got " + kind_with_article(camera.kind()),
+           "a camera declared by 'camera NAME = ...', or one made here, as in 'view " + view.name.text +
+               " = ortho(eye: (0, -10, 0), target: (0, 0, 0), height: 4) at page (80, 60)'");
+    setting.camera.camera = camera.as_camera();
+  }
+
+  const Value at = eval(*view.point, scope);
+  if (!at.is(ValueKind::Vector))
+    fail(view.point->span, "a view goes at a page point, got " + kind_with_article(at.kind()),
+         "'at page (80, 60)': millimetres from the page's top-left corner");
+  const Vector3 p = at.as_vector();
+  if (!(std::isfinite(p.x) && std::isfinite(p.y)) || p.x < 0 || p.y < 0 || p.z != 0 ||
+      p.x > kMaxPaperSideMm || p.y > kMaxPaperSideMm)
+    fail(view.point->span,
+         "a page point is (x, y) in millimetres from the page's top-left corner, both 0 or more",
+         "for example: at page (80, 60)");
+  setting.at_mm = {p.x, p.y};
+
+  OptionList list = view_options();
+  list.who = "view '" + view.name.text + "': ";
+  const GivenOptions given =
+      check_options(view.options, list, [&](const lang::Expr& e) { return eval(e, scope); });
+  if (const GivenOption* o = find(given, "scale"))
+    setting.mm_per_unit = number_in(
+        *o, list, [](double x) { return x > 0 && x <= kMaxPaperSideMm; },
+        "above 0 millimetres per unit, at most " + format_for_message(kMaxPaperSideMm));
+  setting.label = capitals(view.name.text);
+  if (const GivenOption* o = find(given, "label")) setting.label = o->value.as_string();
+  if (const GivenOption* o = find(given, "hidden")) setting.hidden = o->value.as_bool();
+  out_.views.push_back(std::move(setting));
+}
+
+}  // namespace hlr::runtime

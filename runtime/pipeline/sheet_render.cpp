@@ -1,0 +1,146 @@
+#include "runtime/pipeline/sheet_render.hpp"
+
+#include <algorithm>
+#include <optional>
+
+#include "core/device/page/sheet_layout.hpp"
+#include "core/geometry/box3.hpp"
+
+namespace hlr::runtime {
+
+SheetDrawing render_sheet(const FrameScene& scene, const PageSpec& spec, bool framed, HiddenStyle hidden,
+                          const HlrOptions& hlr, const ViewRenderer& render) {
+  SheetDrawing out;
+  out.hidden = hidden;
+  std::vector<SheetViewFit> fits;
+  std::vector<double> per_picture;  // each view's world units per picture unit
+  for (const ViewSetting& v : scene.views) {
+    HlrOptions options = hlr;
+    const bool drawn = v.hidden.value_or(hidden.drawn());
+    options.include_hidden = drawn;
+    options.max_level = drawn ? hidden.max_level() : 0;
+    if (drawn && !out.hidden.drawn()) out.hidden = HiddenStyle::dashed();
+    FrameResult result = render(v.camera.camera, options);
+    SheetView view;
+    view.name = v.camera.name;
+    view.camera = v.camera.camera;
+    view.label = v.label;
+    view.first_segment = out.segments.size();
+    out.segments.insert(out.segments.end(), std::make_move_iterator(result.segments.begin()),
+                        std::make_move_iterator(result.segments.end()));
+    view.end_segment = out.segments.size();
+    out.views.push_back(std::move(view));
+    const FrameStats& s = result.stats;
+    out.stats.candidate_edges += s.candidate_edges;
+    out.stats.occluder_faces += s.occluder_faces;
+    out.stats.face_tests += s.face_tests;
+    out.stats.intersection_lines += s.intersection_lines;
+    out.stats.visible_segments += s.visible_segments;
+    out.stats.ms.self_crossings += s.ms.self_crossings;
+    out.stats.ms.setup += s.ms.setup;
+    out.stats.ms.grid += s.ms.grid;
+    out.stats.ms.examine += s.ms.examine;
+    out.stats.ms.finish += s.ms.finish;
+
+    // World units per picture unit; a perspective camera without a target takes the scene's centre.
+    double fallback = 0;
+    if (v.camera.camera.projection == Projection::Perspective && v.camera.camera.target_depth <= 0) {
+      Box3 bounds;
+      for (const SceneObject& o : scene.scene.objects)
+        for (const Point3& p : o.solid->vertices) bounds.include(p);
+      if (bounds.lo.x <= bounds.hi.x)
+        fallback = v.camera.camera
+                       .view(Point3{0.5 * (bounds.lo.x + bounds.hi.x), 0.5 * (bounds.lo.y + bounds.hi.y),
+                                    0.5 * (bounds.lo.z + bounds.hi.z)})
+                       .z;
+    }
+    const double k = world_per_picture_unit(v.camera.camera, fallback);
+    per_picture.push_back(k);
+    SheetViewFit fit;
+    fit.at_mm = v.at_mm;
+    fit.mm_per_unit = v.mm_per_unit;
+    if (v.camera.camera.frame) {
+      fit.extent = *v.camera.camera.frame;
+    } else {
+      fit.extent = Rect2::none();
+      for (std::size_t i = out.views.back().first_segment; i < out.segments.size(); ++i) {
+        const VisibleSegment& piece = out.segments[i];
+        if (piece.hidden && !drawn) continue;
+        fit.extent.include(piece.s0);
+        fit.extent.include(piece.s1);
+      }
+    }
+    if (!fit.extent.empty())
+      fit.extent = {k * fit.extent.xmin, k * fit.extent.ymin, k * fit.extent.xmax, k * fit.extent.ymax};
+    fit.label_band_mm = v.label.empty() ? 0 : kViewLabelBandMm;
+    fits.push_back(fit);
+  }
+  const double sheet_scale =
+      fitted_sheet_scale(fits, spec, framed ? sheet_frame(spec).title_block : Rect2::none());
+  // The title block's scale: the sheet's when a view is drawn at it, else the views' own when they share
+  // one, else "AS SHOWN"; a view at another scale says so under it, as drawings do: "DETAIL (2:1)".
+  std::optional<double> title_scale;
+  if (std::any_of(scene.views.begin(), scene.views.end(),
+                  [](const ViewSetting& v) { return !v.mm_per_unit; }))
+    title_scale = sheet_scale;
+  else if (std::all_of(scene.views.begin(), scene.views.end(), [&](const ViewSetting& v) {
+             return v.mm_per_unit == scene.views.front().mm_per_unit;
+           }))
+    title_scale = scene.views.front().mm_per_unit;
+  out.scale_text = title_scale ? scale_ratio_text(*title_scale) : "AS SHOWN";
+  for (std::size_t i = 0; i < out.views.size(); ++i) {
+    const ViewSetting& v = scene.views[i];
+    const double scale = v.mm_per_unit.value_or(sheet_scale);
+    out.views[i].layout = view_layout(spec.paper, v.at_mm, scale * per_picture[i]);
+    out.views[i].mm_per_world_unit = scale;
+    if (!out.views[i].label.empty() && scale != title_scale)
+      out.views[i].label += " (" + scale_ratio_text(scale) + ")";
+  }
+  return out;
+}
+
+std::vector<lang::Diagnostic> sheet_warnings(const FrameScene& scene, const PageSpec& spec,
+                                             const std::vector<Rect2>& boxes, bool framed) {
+  std::vector<lang::Diagnostic> out;
+  const auto warn = [&](const ViewSetting& v, std::string message, std::string hint) {
+    lang::Diagnostic d;
+    d.severity = lang::Severity::Warning;
+    d.span = v.camera.span;
+    d.message = "view '" + v.camera.name + "': " + std::move(message);
+    d.hint = std::move(hint);
+    out.push_back(std::move(d));
+  };
+  const double m = spec.margin_mm, w = spec.paper.width_mm, h = spec.paper.height_mm;
+  const Rect2 inside{m, m, w - m, h - m};
+  const Rect2 title = framed ? sheet_frame(spec).title_block : Rect2::none();
+  for (std::size_t i = 0; i < scene.views.size() && i < boxes.size(); ++i) {
+    const ViewSetting& v = scene.views[i];
+    if (!inside.contains(v.at_mm)) {
+      warn(v, "its point lies outside the page's margins",
+           "put it within the margins, as in 'at page (" + std::to_string(int(w / 2)) + ", " +
+               std::to_string(int(h / 2)) + ")'");
+      continue;
+    }
+    const Rect2& box = boxes[i];
+    if (box.empty()) continue;
+    const double slack = 1e-6;
+    if (box.xmin < inside.xmin - slack || box.ymin < inside.ymin - slack || box.xmax > inside.xmax + slack ||
+        box.ymax > inside.ymax + slack) {
+      warn(v, "its drawing runs past the page's margins", "give it a smaller scale:, or move it");
+      continue;
+    }
+    bool overlapping = false;
+    for (std::size_t j = 0; j < i && !overlapping; ++j)
+      if (!boxes[j].empty() && box.overlaps(boxes[j])) {
+        warn(v, "its drawing overlaps view '" + scene.views[j].camera.name + "'",
+             "move one of them, or give them a smaller scale:");
+        overlapping = true;
+      }
+    if (!overlapping && !title.empty() && box.overlaps(title))
+      warn(v, "its drawing overlaps the title block in the bottom-right corner",
+           "move it, or give it a smaller scale:");
+  }
+  return out;
+}
+
+}  // namespace hlr::runtime

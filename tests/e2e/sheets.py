@@ -1,0 +1,149 @@
+#!/usr/bin/env python3
+"""End to end: sheets of views (`view NAME = CAMERA at page (X, Y) ...`, tracker issue 41).
+
+Boxes seen square on by orthographic cameras, so where every line lands on the page is worked out here by
+hand, not by the engine:
+  - a box 4 × 2 × 1 seen from the front at 10 mm per unit, its centre at page (100, 60): the rectangle
+    x 80 … 120, y 55 … 65; from above at (100, 180): x 80 … 120, y 170 … 190, and the small box beside it
+    x 95 … 105, y 150 … 160. Its hidden edges all lie
+    under visible ones, so the engine returns hidden pieces but none is drawn (visible lines win);
+  - a small box behind it, hidden in the front view: its front and back faces project to one rectangle,
+    x 95 … 105, y 59 … 63, drawn once (28 mm of hidden strokes);
+  - without scales, the sheet takes the largest ISO scale (1, 2, 5 × 10^k) at which each view and its label
+    stay inside the margins: 20 here (worked out below);
+  - a perspective view with hidden: false has no hidden pieces; --camera NAME draws one view alone;
+  - the frame is drawn along the margins and each view's label under it; PDF, plotter SVG, HPGL, G-code
+    and DXF are written from the same sheet.
+
+    sheets.py HLRSCRIPT WORKDIR
+"""
+import json
+import math
+import os
+import subprocess
+import sys
+
+hlrscript, work = sys.argv[1], sys.argv[2]
+os.makedirs(work, exist_ok=True)
+EPS = 1e-6
+
+
+def fail(message):
+    print("FAIL: " + message)
+    sys.exit(1)
+
+
+def run(name, body, *args, out_ext="json"):
+    script = os.path.join(work, name + ".hls")
+    with open(script, "w") as f:
+        f.write(body)
+    out = os.path.join(work, name + "." + out_ext)
+    r = subprocess.run([hlrscript, script, "-o", out, *args], capture_output=True, text=True, timeout=120)
+    if r.returncode != 0:
+        fail(f"{name}: exit {r.returncode}: {r.stderr}")
+    return out, r.stderr
+
+
+def on_rect(p, rect):
+    x0, y0, x1, y1 = rect
+    inside = x0 - EPS <= p[0] <= x1 + EPS and y0 - EPS <= p[1] <= y1 + EPS
+    edge = min(abs(p[0] - x0), abs(p[0] - x1), abs(p[1] - y0), abs(p[1] - y1)) < EPS
+    return inside and edge
+
+
+def length(strokes):
+    return sum(math.dist(s[i - 1], s[i]) for s in strokes for i in range(1, len(s)))
+
+
+BOXES = """
+draw box(min: (-2, -1, 0), max: (2, 1, 1))
+draw box(min: (-0.5, 2, 0.2), max: (0.5, 3, 0.6))
+style hidden dashed
+view front = ortho(eye: (0, -10, 0.5), target: (0, 0, 0.5), height: 4) at page (100, 60) scale: 10 label: ""
+camera plan = ortho(eye: (0, 0, 10), target: (0, 0, 0), up: (0, 1, 0), height: 4)
+view top = plan at page (100, 180) scale: 10 label: ""
+view iso = lookat(eye: (8, -6, 5), target: (0, 0, 0.5), fov: 30) at page (230, 100) scale: 10 hidden: false
+"""
+
+# ---- where the lines land ----
+out, _ = run("boxes", BOXES, "--plain")
+frame = json.load(open(out))["frames"][0]
+if "camera" in frame or "layout" in frame:
+    fail("a sheet's frame has views instead of one camera and layout")
+views = frame["views"]
+if [v["name"] for v in views] != ["front", "top", "iso"]:
+    fail(f"views: {[v['name'] for v in views]}")
+for v, at in zip(views, [(100, 60), (100, 180), (230, 100)]):
+    if v["mm_per_world_unit"] != 10:
+        fail(f"view {v['name']}: scale {v['mm_per_world_unit']}, wanted 10")
+    if any(abs(a - b) > EPS for a, b in zip(v["layout"]["origin_mm"], at)):
+        fail(f"view {v['name']}: picture origin at {v['layout']['origin_mm']}, wanted {at}")
+if views[0]["label"] != "" or views[2]["label"] != "ISO":
+    fail(f"labels: {[v['label'] for v in views]}")
+by_view = [[s for s in frame["segments"] if s["view"] == i] for i in range(3)]
+if not any(s["hidden"] for s in by_view[0]) or not any(s["hidden"] for s in by_view[1]):
+    fail("the engine returns hidden pieces in the front and top views")
+if any(s["hidden"] for s in by_view[2]):
+    fail("the view with hidden: false has hidden pieces")
+
+front, top, small = (80, 55, 120, 65), (80, 170, 120, 190), (95, 59, 105, 63)
+small_top = (95, 150, 105, 160)  # the small box, in plain sight from above
+drawn = [s for s in frame["strokes"] if all(x < 160 for x, _ in s)]  # the orthographic views, left of the iso
+for s in drawn:
+    for p in s:
+        if not (on_rect(p, front) or on_rect(p, top) or on_rect(p, small_top)):
+            fail(f"visible stroke point {p} is on no box outline")
+if abs(length(drawn) - (2 * (40 + 10) + 2 * (40 + 20) + 4 * 10)) > 1e-6:
+    fail(f"visible length of the three outlines: {length(drawn)}, wanted 260")
+hidden = frame["hidden_strokes"]
+for s in hidden:
+    for p in s:
+        if not on_rect(p, small):
+            fail(f"hidden stroke point {p} is not on the small box's outline")
+if abs(length(hidden) - 28) > 1e-6:
+    fail(f"hidden length: {length(hidden)}, wanted 28 (the small box once; the big box's under its outline)")
+
+# ---- the fitted scale ----
+# A4 landscape, 12 mm margins. front at (100, 60): 2 units right and left, 0.5 up and down from its target,
+# its label 5 + 3.5·28/21 mm below: left (100 − 12)/2 = 44, down (198 − 60 − 9.67)/0.5 = 256.7. top at
+# (100, 150), ±2 by ±1: left 44, down (198 − 150 − 9.67)/1 = 38.3; the two apart along y, 5 mm between:
+# (90 − 5 − 9.67)/(0.5 + 1) = 50.2. Largest ISO scale ≤ 38.3: 20.
+FITTED = """
+draw box(min: (-2, -1, 0), max: (2, 1, 1))
+view front = ortho(eye: (0, -10, 0.5), target: (0, 0, 0.5), height: 4) at page (100, 60)
+view top = ortho(eye: (0, 0, 10), target: (0, 0, 0), up: (0, 1, 0), height: 4) at page (100, 150)
+"""
+out, _ = run("fitted", FITTED)
+frame = json.load(open(out))["frames"][0]
+if [v["mm_per_world_unit"] for v in frame["views"]] != [20, 20]:
+    fail(f"fitted scales: {[v['mm_per_world_unit'] for v in frame['views']]}, wanted 20")
+# The frame along the margins: a stroke through the corners (12, 12) and (285, 198).
+corners = {(12.0, 12.0), (285.0, 12.0), (285.0, 198.0), (12.0, 198.0)}
+if not any(corners <= {(round(x, 6), round(y, 6)) for x, y in s} for s in frame["strokes"]):
+    fail("no stroke draws the sheet's frame along the margins")
+# Labels under the views: letters below the front view's outline (y 50 … 70 at 20:1), above the top view.
+below = [p for s in frame["strokes"] for p in s if 70 + 4 < p[1] < 70 + 10 and 60 < p[0] < 140]
+if not below:
+    fail("no label strokes under the front view")
+
+# ---- one view alone ----
+out, _ = run("alone", FITTED, "--camera", "top")
+frame = json.load(open(out))["frames"][0]
+if "views" in frame or "camera" not in frame:
+    fail("--camera top draws that view alone, as a camera")
+
+# ---- warnings ----
+OVERLAP = FITTED.replace("at page (100, 150)", "at page (110, 65) scale: 20")
+_, err = run("overlap", OVERLAP)
+if "view 'top': its drawing overlaps view 'front'" not in err:
+    fail(f"no overlap warning: {err}")
+
+# ---- every device ----
+for ext in ["pdf", "svg", "hpgl", "gcode", "dxf", "png"]:
+    out, _ = run("boxes", BOXES, out_ext=ext)
+    if os.path.getsize(out) == 0:
+        fail(f"{ext}: empty")
+out, _ = run("boxes-plotter", BOXES, "--svg", "plotter", out_ext="svg")
+if "hidden" not in open(out).read():
+    fail("plotter SVG: no hidden layer")
+print("ok")
