@@ -223,6 +223,12 @@ struct ViewStmt {  // view NAME = CAMERA at page (X, Y) [KEY: EXPR ...]
   ExprPtr point;
   std::vector<Argument> options;  // as written; the runtime checks them
 };
+struct DimensionStmt {  // dimension from P to Q [in VIEW] [KEY: EXPR ...]
+  ExprPtr from;
+  ExprPtr to;
+  std::optional<Name> view;       // absent: the sheet's only view
+  std::vector<Argument> options;  // as written; the runtime checks them
+};
 struct PlotterStmt {  // plotter NAME { KEY: EXPR ... }
   Name name;
   std::vector<Argument> entries;  // each labelled with its key, as written
@@ -231,7 +237,8 @@ struct PlotterStmt {  // plotter NAME { KEY: EXPR ... }
 struct Stmt {
   SourceSpan span;
   std::variant<SolidStmt, LetStmt, DefStmt, ReturnStmt, ForStmt, IfStmt, DrawStmt, CameraStmt, AnimateStmt,
-               OutputStmt, PaperStmt, StyleStmt, IncludeStmt, PenStmt, PlotterStmt, LabelStmt, ViewStmt>
+               OutputStmt, PaperStmt, StyleStmt, IncludeStmt, PenStmt, PlotterStmt, LabelStmt, ViewStmt,
+               DimensionStmt>
       node;
 };
 

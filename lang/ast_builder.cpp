@@ -367,6 +367,7 @@ template <> struct action<g::camera_name> : push_name {};
 template <> struct action<g::paper_size> : push_name {};
 template <> struct action<g::plotter_name> : push_name {};
 template <> struct action<g::view_name> : push_name {};
+template <> struct action<g::dimension_view> : push_name {};
 template <> struct action<g::style_property> : push_name {};
 template <> struct action<g::style_word> : push_name {};
 template <> struct action<g::style_levels_word> : push_name {};
@@ -617,6 +618,21 @@ struct action<g::view_stmt> {
       view.point = box(take<Expr>(*it++));
       for (; it != end; ++it) view.options.push_back(take<Argument>(*it));
       return view;
+    });
+  }
+};
+
+template <>
+struct action<g::dimension_stmt> {
+  template <typename Input>
+  static void apply(const Input& in, ParseState& s) {
+    make_statement(span_of(in, s), s, [](auto it, auto end) {
+      DimensionStmt dimension;
+      dimension.from = box(take<Expr>(*it++));
+      dimension.to = box(take<Expr>(*it++));
+      if (it != end && holds<Name>(*it)) dimension.view = take<Name>(*it++);
+      for (; it != end; ++it) dimension.options.push_back(take<Argument>(*it));
+      return dimension;
     });
   }
 };

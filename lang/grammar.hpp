@@ -153,6 +153,9 @@ struct key_label : key< TAO_PEGTL_STRING( "label" ) > {};
 struct key_size : key< TAO_PEGTL_STRING( "size" ) > {};
 struct key_page : key< TAO_PEGTL_STRING( "page" ) > {};
 struct key_view : key< TAO_PEGTL_STRING( "view" ) > {};
+struct key_dimension : key< TAO_PEGTL_STRING( "dimension" ) > {};
+struct key_from : key< TAO_PEGTL_STRING( "from" ) > {};
+struct key_to : key< TAO_PEGTL_STRING( "to" ) > {};
 struct solid_word : sor< key_vertex, key_face, key_hole, key_line > {};
 
 struct name : seq< not_at< reserved >, identifier > {};
@@ -520,12 +523,24 @@ struct view_option : seq< arg_label, sp, must< view_option_value > > {};
 struct view_stmt : seq< key_view, sp, must< view_name >, sp, must< camera_eq >, sp, must< view_camera >, sp,
                         must< view_at >, sp, must< view_page >, sp, must< view_point >, star< sp, view_option > > {};
 
+// dimension from P to Q [in VIEW] [KEY: EXPR ...]: the distance between two world points drawn in a view of
+// the sheet; options (offset:, direction:, text:, precision:, pen:) as a view's.
+struct dimension_from : key_from {};
+struct dimension_start : seq< expression > {};
+struct dimension_to : key_to {};
+struct dimension_end : seq< expression > {};
+struct dimension_view : name {};
+struct dimension_in : seq< key_in, sp, must< dimension_view > > {};
+struct dimension_stmt : seq< key_dimension, sp, must< dimension_from >, sp, must< dimension_start >, sp,
+                             must< dimension_to >, sp, must< dimension_end >, opt< sp, dimension_in >,
+                             star< sp, view_option > > {};
+
 struct include_path : seq< string_lit > {};
 struct include_stmt : seq< key_include, sp, must< include_path > > {};
 
 struct statement : sor< solid_stmt, let_stmt, def_stmt, return_stmt, for_stmt, if_stmt, draw_stmt, camera_stmt,
                         animate_stmt, output_stmt, paper_stmt, style_stmt, include_stmt, pen_stmt, plotter_stmt,
-                        label_stmt, view_stmt > {};
+                        label_stmt, view_stmt, dimension_stmt > {};
 
 // ---- the script ---------------------------------------------------------------------------------
 

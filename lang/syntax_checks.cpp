@@ -104,6 +104,11 @@ class Checker {
     arguments(s.options);  // names and values: the runtime's
   }
   void visit(const Stmt&, const PlotterStmt& s) { arguments(s.entries); }
+  void visit(const Stmt&, const DimensionStmt& s) {
+    expr(*s.from);
+    expr(*s.to);
+    arguments(s.options);
+  }
   void visit(const Stmt&, const ViewStmt& s) {
     expr(*s.camera);
     expr(*s.point);

@@ -52,6 +52,10 @@ const StatementHelp kStatements[] = {
     {"view", "view NAME = CAMERA at page (X, Y) [scale: MM_PER_UNIT] [label: TEXT] [hidden: BOOL]",
      "Places a camera's drawing on the sheet, its target at page (X, Y) mm; a script with views draws them "
      "all on each page, each with its own hidden lines, labelled, with a title block."},
+    {"dimension",
+     "dimension from P to Q [in VIEW] [offset: MM] [direction: D] [text: T] [precision: N] [pen: N]",
+     "Draws the distance between two world points in a view of the sheet: extension lines, a dimension line "
+     "with arrowheads and the value in single-stroke letters, hidden by nothing."},
 };
 
 const BuiltinFunction* builtin_function(const std::string& name) {

@@ -24,6 +24,23 @@ const OptionList& view_options() {
   return list;
 }
 
+const OptionList& dimension_options() {
+  static const OptionList list{
+      "dimension: ",
+      "option",
+      "offset: 12",
+      "a dimension's options are offset: millimetres from the points to the dimension line (default 10; "
+      "negative: below, or right of an upright one), direction: \"aligned\" (the true distance, the "
+      "default), \"horizontal\" or \"vertical\" (along the view's right or up), text: written instead of "
+      "the value, precision: decimals at most (0 to 6, default 2) and pen: its pen (default 1)",
+      {{"offset", ValueKind::Number},
+       {"direction", ValueKind::String},
+       {"text", ValueKind::String},
+       {"precision", ValueKind::Number},
+       {"pen", ValueKind::Number}}};
+  return list;
+}
+
 std::string capitals(const std::string& name) {
   std::string out = name;
   for (char& c : out) c = c == '_' ? ' ' : static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
@@ -90,6 +107,58 @@ void Evaluator::exec_view(const lang::ViewStmt& view, const lang::Stmt& stmt, co
   if (const GivenOption* o = find(given, "label")) setting.label = o->value.as_string();
   if (const GivenOption* o = find(given, "hidden")) setting.hidden = o->value.as_bool();
   out_.views.push_back(std::move(setting));
+}
+
+void Evaluator::exec_dimension(const lang::DimensionStmt& dimension, const lang::Stmt& stmt,
+                               const ScopePtr& scope) {
+  DimensionSetting setting;
+  setting.span = stmt.span;
+  setting.view_span = dimension.view ? dimension.view->span : stmt.span;
+  if (dimension.view) setting.view_name = dimension.view->text;
+  const auto point = [&](const lang::Expr& e, const char* which) {
+    const Value v = eval(e, scope);
+    if (!v.is(ValueKind::Vector))
+      fail(e.span,
+           std::string("a dimension runs between world points: '") + which + "' needs a point, got " +
+               kind_with_article(v.kind()),
+           "for example: dimension from (0, 0, 0) to (80, 0, 0) in front");
+    const Vector3 p = v.as_vector();
+    if (!is_finite(Point3{p.x, p.y, p.z})) fail(e.span, "the point must be finite");
+    return Point3{p.x, p.y, p.z};
+  };
+  PageDimension& d = setting.dimension;
+  d.from = point(*dimension.from, "from");
+  d.to = point(*dimension.to, "to");
+  const OptionList& list = dimension_options();
+  const GivenOptions given =
+      check_options(dimension.options, list, [&](const lang::Expr& e) { return eval(e, scope); });
+  if (const GivenOption* o = find(given, "offset"))
+    d.offset_mm = number_in(
+        *o, list, [](double x) { return std::abs(x) <= kMaxPaperSideMm; },
+        "at most " + format_for_message(kMaxPaperSideMm) + " millimetres either way");
+  if (const GivenOption* o = find(given, "direction")) {
+    const std::string& word = o->value.as_string();
+    if (word == "aligned")
+      d.direction = DimensionDirection::Aligned;
+    else if (word == "horizontal")
+      d.direction = DimensionDirection::Horizontal;
+    else if (word == "vertical")
+      d.direction = DimensionDirection::Vertical;
+    else
+      fail(o->span,
+           list.who + "option 'direction' must be \"aligned\", \"horizontal\" or \"vertical\", got \"" +
+               word + "\"",
+           list.hint);
+  }
+  if (const GivenOption* o = find(given, "text")) d.text = o->value.as_string();
+  if (const GivenOption* o = find(given, "precision"))
+    d.precision = static_cast<int>(number_in(
+        *o, list, [](double x) { return x >= 0 && x <= 6 && whole(x); }, "a whole number from 0 to 6"));
+  if (const GivenOption* o = find(given, "pen"))
+    d.pen = static_cast<int>(number_in(
+        *o, list, [](double x) { return x >= 1 && x <= kMaxPen && whole(x); },
+        "a whole number from 1 to " + std::to_string(kMaxPen)));
+  out_.dimensions.push_back(std::move(setting));
 }
 
 }  // namespace hlr::runtime

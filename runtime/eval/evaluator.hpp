@@ -79,6 +79,7 @@ class Evaluator {
   void exec_plotter(const lang::PlotterStmt& plotter, const lang::Stmt& stmt, const ScopePtr& scope);
   void exec_label(const lang::LabelStmt& label, const lang::Stmt& stmt, const ScopePtr& scope);
   void exec_view(const lang::ViewStmt& view, const lang::Stmt& stmt, const ScopePtr& scope);  // eval_views.cpp
+  void exec_dimension(const lang::DimensionStmt& dimension, const lang::Stmt& stmt, const ScopePtr& scope);
   // `pen N`: a whole number from 1 to 255, else an error at `expr`
   int eval_pen_number(const lang::Expr& expr, const ScopePtr& scope);
 

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "core/camera/camera.hpp"
+#include "core/device/page/dimension_strokes.hpp"
 #include "core/device/page/hidden_style.hpp"
 #include "core/device/page/page_layout.hpp"
 #include "core/device/plotters/gcode_profile.hpp"
@@ -91,6 +92,15 @@ struct ViewSetting {
   lang::SourceSpan name_span;
 };
 
+// dimension from P to Q [in VIEW] [offset:, direction:, text:, precision:, pen:]: drawn on the sheet in its
+// view (core/device/page/dimension_strokes.hpp); the view is looked up when the sheet is laid out.
+struct DimensionSetting {
+  PageDimension dimension;  // its `view` is set from `view_name` by the pipeline
+  std::optional<std::string> view_name;
+  lang::SourceSpan view_span;  // the name after `in`, else the statement
+  lang::SourceSpan span;       // the statement
+};
+
 struct FrameScene {
   FrameTime time;
   Scene scene;                       // drawn objects in draw order, names unique ("box", "box#2")
@@ -107,6 +117,7 @@ struct FrameScene {
   std::vector<PlotterSetting> plotters;        // declared plotters, names unique
   std::vector<LabelSetting> labels;            // in statement order
   std::vector<ViewSetting> views;              // in statement order, names unique; none: one camera's page
+  std::vector<DimensionSetting> dimensions;    // in statement order
   std::vector<lang::Diagnostic> warnings;
   std::uint64_t steps = 0;
   std::size_t faces_built = 0;

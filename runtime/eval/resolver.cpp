@@ -197,6 +197,11 @@ class Resolver {
                      expr(*s.point, scope);
                      options(s.options, scope);
                    },
+                   [&](const lang::DimensionStmt& s) {
+                     expr(*s.from, scope);
+                     expr(*s.to, scope);
+                     options(s.options, scope);
+                   },
                    [&](const lang::LabelStmt& s) {
                      expr(*s.text, scope);
                      expr(*s.point, scope);

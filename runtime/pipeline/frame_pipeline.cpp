@@ -127,7 +127,12 @@ void run_frame(const Program& program, int frame, double fps, const PipelineOpti
   const auto start = Clock::now();
   FrameResult result;
   std::optional<SheetDrawing> sheet;
+  if (scene.views.empty() && !scene.dimensions.empty())
+    fail(scene.dimensions.front().span,
+         "a dimension is drawn in a view of a sheet, and this script has no views",
+         "place the camera on the sheet: view front = CAMERA at page (X, Y), then 'dimension ... in front'");
   if (settings.sheet) {
+    settings.plot.dimensions = sheet_dimensions(scene);
     // Labels at world points belong to one camera's picture; a sheet has several.
     for (const LabelSetting& label : scene.labels)
       if (!label.on_page)
@@ -200,6 +205,15 @@ void run_frame(const Program& program, int frame, double fps, const PipelineOpti
     for (lang::Diagnostic& d :
          sheet_warnings(scene, settings.plot.spec, frame_out.plot.view_boxes, title.framed))
       job.view_warnings.push_back(std::move(d));
+    for (std::size_t i = 0; i < frame_out.plot.dimension_problems.size() && i < scene.dimensions.size(); ++i)
+      if (const std::string& problem = frame_out.plot.dimension_problems[i]; !problem.empty()) {
+        lang::Diagnostic d;
+        d.severity = lang::Severity::Warning;
+        d.span = scene.dimensions[i].span;
+        d.message = "the dimension is not drawn: " + problem;
+        d.hint = "measure between points apart in this view, or put it in another view";
+        job.view_warnings.push_back(std::move(d));
+      }
   } else {
     frame_out.plot = plot_page(result.segments, camera.frame, settings.caption, settings.plot);
   }

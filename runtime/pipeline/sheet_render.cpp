@@ -5,6 +5,7 @@
 
 #include "core/device/page/sheet_layout.hpp"
 #include "core/geometry/box3.hpp"
+#include "runtime/base/eval_error.hpp"
 
 namespace hlr::runtime {
 
@@ -95,6 +96,32 @@ SheetDrawing render_sheet(const FrameScene& scene, const PageSpec& spec, bool fr
     out.views[i].mm_per_world_unit = scale;
     if (!out.views[i].label.empty() && scale != title_scale)
       out.views[i].label += " (" + scale_ratio_text(scale) + ")";
+  }
+  return out;
+}
+
+std::vector<PageDimension> sheet_dimensions(const FrameScene& scene) {
+  std::vector<PageDimension> out;
+  std::string names;
+  for (const ViewSetting& v : scene.views) names += (names.empty() ? "" : ", ") + v.camera.name;
+  for (const DimensionSetting& setting : scene.dimensions) {
+    PageDimension d = setting.dimension;
+    if (!setting.view_name) {
+      if (scene.views.size() != 1)
+        fail(setting.span,
+             "say which view the dimension is drawn in: the sheet has " + std::to_string(scene.views.size()) +
+                 " views",
+             "add 'in NAME' after the points; the views: " + names);
+      d.view = 0;
+    } else {
+      const auto it = std::find_if(scene.views.begin(), scene.views.end(),
+                                   [&](const ViewSetting& v) { return v.camera.name == *setting.view_name; });
+      if (it == scene.views.end())
+        fail(setting.view_span, "the sheet has no view named '" + *setting.view_name + "'",
+             "the views: " + names);
+      d.view = static_cast<std::size_t>(it - scene.views.begin());
+    }
+    out.push_back(std::move(d));
   }
   return out;
 }

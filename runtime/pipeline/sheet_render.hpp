@@ -32,6 +32,11 @@ using ViewRenderer = std::function<FrameResult(const Camera&, const HlrOptions&)
 SheetDrawing render_sheet(const FrameScene& scene, const PageSpec& spec, bool framed, HiddenStyle hidden,
                           const HlrOptions& hlr, const ViewRenderer& render);
 
+// The frame's dimensions, each with the index of its view: the one named after `in`, else the sheet's only
+// view. Throws EvalError at the name for a view the sheet does not have, and at the statement when there
+// are several views and none is named.
+std::vector<PageDimension> sheet_dimensions(const FrameScene& scene);
+
 // Warnings at the view statements: a view whose point is on or outside the margins, whose drawing runs
 // off the page, or that overlaps a view before it or the title block (`boxes`: PagePlot::view_boxes).
 std::vector<lang::Diagnostic> sheet_warnings(const FrameScene& scene, const PageSpec& spec,

@@ -23,7 +23,7 @@ namespace {
 const std::vector<std::string> kKeywords = {
     "solid",  "let",    "def",   "for",  "if",      "else",    "draw", "camera", "animate",
     "output", "paper",  "style", "pen",  "plotter", "include", "at",   "then",   "in",
-    "return", "vertex", "face",  "hole", "line",    "label",   "size", "page", "view"};
+    "return", "vertex", "face",  "hole", "line",    "label",   "size", "page", "view", "dimension"};
 
 struct Command {
   const char* name;

@@ -13,7 +13,9 @@ hand, not by the engine:
     stay inside the margins: 20 here (worked out below);
   - a perspective view with hidden: false has no hidden pieces; --camera NAME draws one view alone;
   - the frame is drawn along the margins and each view's label under it; PDF, plotter SVG, HPGL, G-code
-    and DXF are written from the same sheet.
+    and DXF are written from the same sheet;
+  - a dimension of the big box's length, 10 mm below the front view in pen 2: extension lines, the line
+    from page (80, 75) to (120, 75), its value under the middle.
 
     sheets.py HLRSCRIPT WORKDIR
 """
@@ -102,6 +104,30 @@ for s in hidden:
             fail(f"hidden stroke point {p} is not on the small box's outline")
 if abs(length(hidden) - 28) > 1e-6:
     fail(f"hidden length: {length(hidden)}, wanted 28 (the small box once; the big box's under its outline)")
+
+# ---- a dimension ----
+# The big box's length in the front view, 10 mm below it in pen 2: extension lines down from its bottom
+# corners (page (80, 65) and (120, 65)), the dimension line at y = 75 from x 80 to 120, the value "4".
+DIMENSIONED = BOXES + 'dimension from (-2, -1, 0) to (2, -1, 0) in front offset: -10 pen: 2\n'
+out, _ = run("dimensioned", DIMENSIONED, "--plain")
+frame = json.load(open(out))["frames"][0]
+pen2 = [s for s, pen in zip(frame["strokes"], frame["stroke_pens"]) if pen == 2]
+segments = [(s[i - 1], s[i]) for s in pen2 for i in range(1, len(s))]  # the plan joins lines into strokes
+
+
+def covered(on, lo, hi):
+    """Length of pen-2 segments lying on the line `on` (a predicate of a point) between lo and hi."""
+    return sum(math.dist(a, b) for a, b in segments if on(a) and on(b))
+
+
+if abs(covered(lambda p: abs(p[1] - 75) < EPS and 80 - EPS <= p[0] <= 120 + EPS, 80, 120) - 40) > 1e-6:
+    fail("the dimension line from (80, 75) to (120, 75) is not drawn whole in pen 2")
+for x in (80, 120):
+    if abs(covered(lambda p: abs(p[0] - x) < EPS and 66.5 - EPS <= p[1] <= 77 + EPS, 66.5, 77) - 10.5) > 1e-6:
+        fail(f"the extension line at x = {x} from y 66.5 to 77 is not drawn whole in pen 2")
+letters = [p for s in pen2 for p in s if p[1] > 77.5]
+if not letters or not all(95 < p[0] < 105 for p in letters):
+    fail("the value is not written under the dimension line's middle")
 
 # ---- the fitted scale ----
 # A4 landscape, 12 mm margins. front at (100, 60): 2 units right and left, 0.5 up and down from its target,

@@ -152,7 +152,16 @@ PagePlot plot_sheet(const std::vector<VisibleSegment>& segments, const std::vect
   if (!views.empty()) out.layout = views.front().layout;
   std::vector<PlotPiece> pieces;
   pieces.reserve(segments.size());
-  for (const SheetView& view : views) {
+  // Dimensions first: each view's label goes under its drawing and its dimensions both.
+  std::vector<DimensionDrawing> dimensions;
+  for (const PageDimension& d : o.dimensions) {
+    dimensions.push_back(d.view < views.size()
+                             ? dimension_strokes(d, views[d.view].camera, views[d.view].layout)
+                             : DimensionDrawing{{}, 0, {}, "its view is not on the sheet"});
+    out.dimension_problems.push_back(dimensions.back().problem);
+  }
+  for (std::size_t v = 0; v < views.size(); ++v) {
+    const SheetView& view = views[v];
     const std::size_t before = pieces.size();
     add_segment_pieces(segments, view.first_segment, view.end_segment, view.layout, o, out, pieces);
     Rect2 box = Rect2::none();
@@ -164,6 +173,12 @@ PagePlot plot_sheet(const std::vector<VisibleSegment>& segments, const std::vect
         box.include(pieces[i].a);
         box.include(pieces[i].b);
       }
+    }
+    for (std::size_t k = 0; k < o.dimensions.size(); ++k) {
+      if (o.dimensions[k].view != v) continue;
+      add_strokes(dimensions[k].strokes, checked_pen(o.dimensions[k].pen), pieces);
+      for (const std::vector<Point2>& stroke : dimensions[k].strokes)
+        for (const Point2& p : stroke) box.include(p);
     }
     if (!view.label.empty() && !box.empty()) {
       const double width = stroke_text_width_mm(view.label, kViewLabelCapMm);

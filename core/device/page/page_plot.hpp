@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "core/camera/camera.hpp"
+#include "core/device/page/dimension_strokes.hpp"
 #include "core/device/page/hidden_style.hpp"
 #include "core/device/page/page_layout.hpp"
 #include "core/device/page/plot_page.hpp"
@@ -42,7 +43,8 @@ struct PagePlotOptions {
   bool caption_as_strokes = false;
   // The pen reaches no closer to the sheet's edge (DevicePlanning::min_margin_mm).
   double reach_margin_mm = 0;
-  std::vector<PageText> texts;  // drawn and planned with the rest
+  std::vector<PageText> texts;            // drawn and planned with the rest
+  std::vector<PageDimension> dimensions;  // a sheet's (plot_sheet), each in its view
   // What the layout fits instead of the frame or the pieces: fixed before labels were added, so that
   // they never move the drawing.
   std::optional<Rect2> extent;
@@ -66,6 +68,8 @@ struct PagePlot {
   // A sheet (plot_sheet): each view on the page, mm — its camera frame, else the bounds of what it draws,
   // with its label; empty for a view that draws nothing.
   std::vector<Rect2> view_boxes;
+  // A sheet: by PagePlotOptions::dimensions, why one was not drawn (empty when it was).
+  std::vector<std::string> dimension_problems;
 };
 
 // Fits the drawing (the camera frame when there is one, else the pieces) to the page, maps every piece
