@@ -13,7 +13,7 @@
 namespace hlr {
 
 // Cuts out of every Hidden piece the parts within Tolerance::kCoincidentLineMm of a Visible piece on the
-// same line, of a Hidden piece of a lower level, or of an earlier Hidden piece of its own level (the back
+// same line (lines that coincide on the page; see the .cpp for pieces at a slant within the tolerance), of a Hidden piece of a lower level, or of an earlier Hidden piece of its own level (the back
 // and front edges of a hole seen end on: one dashed line); what remains of it (one or more pieces, each
 // longer than the tolerance) keeps its place in the order. Hatch pieces neither cover nor are covered.
 // Returns how many hidden pieces were cut or removed.
