@@ -91,12 +91,22 @@ struct Crossing {
   Point3 at;
 };
 
+// Whether face f is one the spec hatches (HatchSpec::only_in_plane).
+bool hatches_face(const Solid& solid, std::size_t f, const HatchSpec& spec) {
+  if (!spec.only_in_plane) return true;
+  const Plane& plane = *spec.only_in_plane;
+  if (dot(solid.planes[f].normal, plane.normal) < 1 - Tolerance::kHatchDirection) return false;
+  for (const VertexIndex v : solid.faces[f].rings[0].vertices)
+    if (std::abs(plane.signed_distance(solid.vertices[v])) > spec.in_plane_tolerance) return false;
+  return true;
+}
+
 }  // namespace
 
 std::size_t hatch_line_bound(const Solid& solid, const HatchSpec& spec) {
   double total = 0;
   for (std::size_t f = 0; f < solid.faces.size(); ++f) {
-    if (solid.faces[f].rings.empty()) continue;
+    if (solid.faces[f].rings.empty() || !hatches_face(solid, f, spec)) continue;
     LineSet sets[2];
     const int n = line_sets(spec, solid.planes[f].normal, sets);
     for (int s = 0; s < n; ++s) {
@@ -124,7 +134,7 @@ Solid hatched(const Solid& solid, const HatchSpec& spec) {
   std::vector<Crossing> crossings;
   for (std::size_t f = 0; f < solid.faces.size(); ++f) {
     const Face& face = solid.faces[f];
-    if (face.rings.empty()) continue;
+    if (face.rings.empty() || !hatches_face(solid, f, spec)) continue;
     const Vector3 n = solid.planes[f].normal;
     if (!(length(n) > 0)) continue;
     LineSet sets[2];

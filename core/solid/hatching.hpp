@@ -31,6 +31,10 @@ struct HatchSpec {
   // planes, so the lines run on unbroken from face to face — on a scan of small triangles, long curves
   // instead of a dash a triangle. The crossing set is cut by planes normal to planes × z.
   std::optional<Vector3> planes;
+  // Only the faces lying in this plane are hatched (their outward normal the plane's, every vertex within
+  // `in_plane_tolerance` of it): the cut faces of a section.
+  std::optional<Plane> only_in_plane;
+  double in_plane_tolerance = 0;
 };
 
 // How many lines hatching `solid` as `spec` lays at most (a line across a non-convex face may give

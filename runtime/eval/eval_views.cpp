@@ -19,8 +19,12 @@ const OptionList& view_options() {
       "scale: 0.5",
       "a view's options are scale: millimetres per drawing unit above 0 (else the paper's scale:, else "
       "one scale fitted to the sheet), label: the text under it (\"\" for none; else its name in capitals) "
-      "and hidden: true or false (its hidden lines drawn or not, whatever the style)",
-      {{"scale", ValueKind::Number}, {"label", ValueKind::String}, {"hidden", ValueKind::Bool}}};
+      "hidden: true or false (its hidden lines drawn or not, whatever the style) and show: the solids it "
+      "draws instead of the script's (a section, say)",
+      {{"scale", ValueKind::Number},
+       {"label", ValueKind::String},
+       {"hidden", ValueKind::Bool},
+       {"show", ValueKind::Solid, {}, true}}};
   return list;
 }
 
@@ -106,6 +110,10 @@ void Evaluator::exec_view(const lang::ViewStmt& view, const lang::Stmt& stmt, co
   setting.label = capitals(view.name.text);
   if (const GivenOption* o = find(given, "label")) setting.label = o->value.as_string();
   if (const GivenOption* o = find(given, "hidden")) setting.hidden = o->value.as_bool();
+  if (const GivenOption* o = find(given, "show")) {
+    setting.shows.emplace();
+    add_to_scene(o->value, Affine3{}, o->span, o->span, 1, *setting.shows, setting.show_pens);
+  }
   out_.views.push_back(std::move(setting));
 }
 

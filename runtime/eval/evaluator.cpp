@@ -165,8 +165,13 @@ void Evaluator::exec_draw(const lang::DrawStmt& draw, const ScopePtr& scope) {
   // Every object this draw adds gets the pen; FrameScene::object_pens stays parallel to the objects.
   const int pen = draw.pen ? eval_pen_number(*draw.pen->number, scope) : 1;
   const lang::SourceSpan& span = draw.transform ? draw.transform->span : draw.object->span;
-  for (PlacedSolid& placed : flatten_placed(object, at, draw.object->span, "draw", budget_)) {
-    budget_.charge_faces_drawn(draw.object->span, placed.solid->faces.size(), placed.solid->vertices.size());
+  add_to_scene(object, at, draw.object->span, span, pen, out_.scene, out_.object_pens);
+}
+
+void Evaluator::add_to_scene(const Value& object, const Affine3& at, const lang::SourceSpan& object_span,
+                             const lang::SourceSpan& span, int pen, Scene& scene, std::vector<int>& pens) {
+  for (PlacedSolid& placed : flatten_placed(object, at, object_span, "draw", budget_)) {
+    budget_.charge_faces_drawn(object_span, placed.solid->faces.size(), placed.solid->vertices.size());
     SceneObject o;
     const int seen = ++drawn_names_[placed.name];
     o.name = seen == 1 ? placed.name : placed.name + "#" + std::to_string(seen);
@@ -185,8 +190,8 @@ void Evaluator::exec_draw(const lang::DrawStmt& draw, const ScopePtr& scope) {
         return moved;
       });
     }
-    out_.scene.objects.push_back(std::move(o));
-    out_.object_pens.push_back(pen);
+    scene.objects.push_back(std::move(o));
+    pens.push_back(pen);
   }
 }
 

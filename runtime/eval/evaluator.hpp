@@ -63,6 +63,9 @@ class Evaluator {
   Flow exec_for(const lang::ForStmt& loop, const ScopePtr& scope);
   Flow exec_if(const lang::IfStmt& branch, const ScopePtr& scope);
   void exec_draw(const lang::DrawStmt& draw, const ScopePtr& scope);
+  // What `draw OBJECT at T pen N` adds, added to `scene` (names numbered frame-wide, "box#2").
+  void add_to_scene(const Value& object, const Affine3& at, const lang::SourceSpan& object_span,
+                    const lang::SourceSpan& span, int pen, Scene& scene, std::vector<int>& pens);
   void exec_camera(const lang::CameraStmt& camera, const lang::Stmt& stmt, const ScopePtr& scope);
   void exec_solid(const lang::SolidStmt& solid, const ScopePtr& scope);  // eval_solid.cpp
   // settings (eval_settings.cpp)
@@ -78,7 +81,8 @@ class Evaluator {
   void exec_pen(const lang::PenStmt& pen, const lang::Stmt& stmt, const ScopePtr& scope);
   void exec_plotter(const lang::PlotterStmt& plotter, const lang::Stmt& stmt, const ScopePtr& scope);
   void exec_label(const lang::LabelStmt& label, const lang::Stmt& stmt, const ScopePtr& scope);
-  void exec_view(const lang::ViewStmt& view, const lang::Stmt& stmt, const ScopePtr& scope);  // eval_views.cpp
+  void exec_view(const lang::ViewStmt& view, const lang::Stmt& stmt,
+                 const ScopePtr& scope);  // eval_views.cpp
   void exec_dimension(const lang::DimensionStmt& dimension, const lang::Stmt& stmt, const ScopePtr& scope);
   // `pen N`: a whole number from 1 to 255, else an error at `expr`
   int eval_pen_number(const lang::Expr& expr, const ScopePtr& scope);

@@ -81,14 +81,17 @@ struct LabelSetting {
   lang::SourceSpan span;  // the statement
 };
 
-// view NAME = CAMERA at page (X, Y) [scale: S] [label: TEXT] [hidden: BOOL]: the camera's drawing on the
-// sheet (runtime/pipeline/sheet_render.hpp), its picture origin — the camera's target — at page (X, Y) mm.
+// view NAME = CAMERA at page (X, Y) [scale: S] [label: TEXT] [hidden: BOOL] [show: SOLIDS]: the camera's
+// drawing on the sheet (runtime/pipeline/sheet_render.hpp), its picture origin — the camera's target — at
+// page (X, Y) mm.
 struct ViewSetting {
   NamedCamera camera;                 // the view's name, its camera and the statement's span
   Point2 at_mm;                       // page millimetres from the top-left corner, y down
   std::optional<double> mm_per_unit;  // scale:; else the paper's, else the sheet's fitted scale
   std::string label;                  // label:; else the name in capitals ("": none)
   std::optional<bool> hidden;         // hidden:; else the sheet's style
+  std::optional<Scene> shows;         // show:; what it draws instead of the script's drawn objects
+  std::vector<int> show_pens;         // by shows' object: pen 1
   lang::SourceSpan name_span;
 };
 

@@ -15,6 +15,7 @@
 #include "lang/ast.hpp"
 #include "runtime/eval/eval_detail.hpp"
 #include "runtime/values/format_value.hpp"
+#include "runtime/values/placement.hpp"
 #include "runtime/values/value.hpp"
 
 namespace hlr::runtime {
@@ -23,6 +24,7 @@ struct OptionSpec {
   std::string_view name;
   ValueKind kind;
   std::string_view alias = {};  // another spelling of the same option ("color")
+  bool drawable = false;        // instead of `kind`: a solid, a group or a list of them
 };
 
 struct OptionList {
@@ -82,11 +84,13 @@ GivenOptions check_options(const std::vector<lang::Argument>& args, const Option
       throw EvalError(std::move(d));
     }
     Value value = eval(*arg.value);
-    if (!value.is(spec->kind))
-      fail(arg.span,
-           list.who + list.noun + " '" + name + "' must be " + kind_wanted(spec->kind) + ", got " +
-               kind_with_article(value.kind()),
-           list.hint);
+    if (spec->drawable ? !is_drawable(value) : !value.is(spec->kind))
+      fail(
+          arg.span,
+          list.who + list.noun + " '" + name + "' must be " +
+              (spec->drawable ? std::string("a solid, a group or a list of them") : kind_wanted(spec->kind)) +
+              ", got " + kind_with_article(value.kind()),
+          list.hint);
     given.emplace(canonical, GivenOption{std::move(value), arg.span, name});
   }
   return given;

@@ -139,10 +139,10 @@ void run_frame(const Program& program, int frame, double fps, const PipelineOpti
         fail(label.span, "on a sheet of views, a label goes at a page point",
              "write 'label ... at page (X, Y)' in millimetres from the page's top-left corner");
     sheet = render_sheet(scene, settings.plot.spec, options.run.device.decorations, settings.hidden, hlr,
-                         [&](const Camera& view_camera, const HlrOptions& options) {
+                         [&](const Scene& drawn, const Camera& view_camera, const HlrOptions& options) {
                            FrameResult view;
                            try {
-                             view = render_frame(scene.scene, view_camera, options);
+                             view = render_frame(drawn, view_camera, options);
                            } catch (const FrameTimedOut&) {
                              out_of_time("the hidden lines");
                            }
@@ -150,6 +150,13 @@ void run_frame(const Program& program, int frame, double fps, const PipelineOpti
                          });
     result.segments = std::move(sheet->segments);
     result.stats = sheet->stats;
+    settings.plot.object_pens.resize(scene.scene.objects.size(), 1);
+    settings.plot.hatch_pens.resize(scene.scene.objects.size(), 0);
+    for (std::size_t i = 0; i < sheet->shown_names.size(); ++i) {
+      r.object_names.push_back(sheet->shown_names[i]);
+      settings.plot.object_pens.push_back(sheet->shown_pens[i]);
+      settings.plot.hatch_pens.push_back(sheet->shown_hatch_pens[i]);
+    }
     settings.hidden = settings.plot.hidden = r.hidden = sheet->hidden;
   } else if (!has_world_labels(scene.labels)) {
     render(scene.scene, result);

@@ -21,7 +21,23 @@ SheetDrawing render_sheet(const FrameScene& scene, const PageSpec& spec, bool fr
     options.include_hidden = drawn;
     options.max_level = drawn ? hidden.max_level() : 0;
     if (drawn && !out.hidden.drawn()) out.hidden = HiddenStyle::dashed();
-    FrameResult result = render(v.camera.camera, options);
+    FrameResult result;
+    if (v.shows) {
+      // Its own solids, numbered after the frame's and those of the views before it.
+      const auto first = static_cast<std::uint32_t>(scene.scene.objects.size() + out.shown_names.size());
+      result = render(*v.shows, v.camera.camera, options);
+      for (VisibleSegment& piece : result.segments) {
+        piece.object += first;
+        piece.other += first;
+      }
+      for (std::size_t i = 0; i < v.shows->objects.size(); ++i) {
+        out.shown_names.push_back(v.shows->objects[i].name);
+        out.shown_pens.push_back(i < v.show_pens.size() ? v.show_pens[i] : 1);
+        out.shown_hatch_pens.push_back(v.shows->objects[i].solid->hatch_pen);
+      }
+    } else {
+      result = render(scene.scene, v.camera.camera, options);
+    }
     SheetView view;
     view.name = v.camera.name;
     view.camera = v.camera.camera;
@@ -47,7 +63,7 @@ SheetDrawing render_sheet(const FrameScene& scene, const PageSpec& spec, bool fr
     double fallback = 0;
     if (v.camera.camera.projection == Projection::Perspective && v.camera.camera.target_depth <= 0) {
       Box3 bounds;
-      for (const SceneObject& o : scene.scene.objects)
+      for (const SceneObject& o : (v.shows ? *v.shows : scene.scene).objects)
         for (const Point3& p : o.solid->vertices) bounds.include(p);
       if (bounds.lo.x <= bounds.hi.x)
         fallback = v.camera.camera

@@ -23,12 +23,16 @@ struct SheetDrawing {
   std::string scale_text;  // the sheet's scale, "1:2"
   // The sheet's hidden style: the frame's, or dashed when it is off and a view asks for hidden lines.
   HiddenStyle hidden;
+  // What views draw of their own (show:), numbered after the frame's drawn objects: their names, pens
+  // and hatch pens, to append to the frame's.
+  std::vector<std::string> shown_names;
+  std::vector<int> shown_pens, shown_hatch_pens;
 };
 
 // Renders every view of `scene` through `render` (the pipeline's render_frame with its timeout handling)
 // and lays them out on the page of `spec` (clear of the title block when `framed`). `hidden` is the
 // sheet's style.
-using ViewRenderer = std::function<FrameResult(const Camera&, const HlrOptions&)>;
+using ViewRenderer = std::function<FrameResult(const Scene&, const Camera&, const HlrOptions&)>;
 SheetDrawing render_sheet(const FrameScene& scene, const PageSpec& spec, bool framed, HiddenStyle hidden,
                           const HlrOptions& hlr, const ViewRenderer& render);
 

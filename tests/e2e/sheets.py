@@ -14,6 +14,8 @@ hand, not by the engine:
   - a perspective view with hidden: false has no hidden pieces; --camera NAME draws one view alone;
   - the frame is drawn along the margins and each view's label under it; PDF, plotter SVG, HPGL, G-code
     and DXF are written from the same sheet;
+  - a box cut in half by section(): only its cut face is hatched, in the hatch pen, and nothing of the
+    removed half is drawn;
   - a dimension of the big box's length, 10 mm below the front view in pen 2: extension lines, the line
     from page (80, 75) to (120, 75), its value under the middle.
 
@@ -128,6 +130,33 @@ for x in (80, 120):
 letters = [p for s in pen2 for p in s if p[1] > 77.5]
 if not letters or not all(95 < p[0] < 105 for p in letters):
     fail("the value is not written under the dimension line's middle")
+
+# ---- a section ----
+# A 4 × 2 × 1 box cut by the plane y = 1, the half towards −y removed: the cut face is the rectangle x 0 … 4,
+# z 0 … 1 at y = 1, and it alone is hatched, 0.25 apart at 45°: every hatch piece lies in it, and their
+# length is the area over the spacing to within a line's length at either end (2 × √2).
+SECTION = """
+draw section(box(min: (0, 0, 0), max: (4, 2, 1)), (0, 1, 0), (0, -1, 0), spacing: 0.25, pen: 3)
+view front = ortho(eye: (2, -10, 0.5), target: (2, 0, 0.5), height: 4) at page (100, 60) scale: 10
+"""
+out, _ = run("section", SECTION, "--plain")
+frame = json.load(open(out))["frames"][0]
+hatch = [s for s in frame["segments"] if s.get("hatch")]
+if not hatch:
+    fail("the section's cut face is not hatched")
+for s in hatch:
+    for x, y, z in s["p"]:
+        if abs(y - 1) > 1e-9 or not (-1e-9 <= x <= 4 + 1e-9 and -1e-9 <= z <= 1 + 1e-9):
+            fail(f"hatch point {(x, y, z)} is not on the cut face")
+total = sum(math.dist(*s["p"]) for s in hatch)
+if abs(total - 4 / 0.25) > 2 * math.sqrt(2):
+    fail(f"hatch length {total}, wanted about {4 / 0.25}")
+if set(frame["hatch_stroke_pens"]) != {3}:
+    fail(f"hatch pens {set(frame['hatch_stroke_pens'])}, wanted pen 3")
+# What is left: the box's front outline is now the cut face's, at y = 1, 4 × 1.
+edges = [s for s in frame["segments"] if not s.get("hatch") and not s["hidden"]]
+if min(min(p[1] for p in s["p"]) for s in edges) < 1 - 1e-9:
+    fail("a visible edge lies in the removed half")
 
 # ---- the fitted scale ----
 # A4 landscape, 12 mm margins. front at (100, 60): 2 units right and left, 0.5 up and down from its target,

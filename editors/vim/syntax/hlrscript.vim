@@ -61,7 +61,7 @@ syn match hlrBuiltin /\<\%(abs\|acos\|adjust\|asin\|atan\|atan2\|box\|ceil\|clam
 syn match hlrBuiltin /\<\%(desens\|desens_carrier\|difference\|distance\|dodecahedron\|dot\|ease\|exp\|extrude\|floor\|follow\)\>/
 syn match hlrBuiltin /\<\%(group\|hatch\|heightfield\|hexahedron\|icosahedron\|identity\|import\|intersection\|lblock\|len\|lerp\|log\)\>/
 syn match hlrBuiltin /\<\%(lookat\|matrix\|max\|min\|mirror\|norm\|normalize\|octahedron\|orbit\|ortho\|place\|pow\)\>/
-syn match hlrBuiltin /\<\%(prism\|pyramid\|range\|rect\|regular\|revolve\|rotate\|round\|scale\|sin\|smoothstep\)\>/
+syn match hlrBuiltin /\<\%(prism\|pyramid\|range\|rect\|regular\|revolve\|rotate\|round\|scale\|section\|sin\|smoothstep\)\>/
 syn match hlrBuiltin /\<\%(sphere\|spline\|sqrt\|stairs\|str\|sweep\|tan\|tetrahedron\|torus\|track\|translate\|union\|vec\)\>/
 syn match hlrConstant /\<pi\>/
 " Bound before each frame is evaluated.

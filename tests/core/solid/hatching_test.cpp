@@ -87,6 +87,27 @@ TEST(Hatching, UnitBoxQuarterApartByHand) {
   EXPECT_EQ(xs, (std::set<double>{0.125, 0.375, 0.625, 0.875}));
 }
 
+TEST(Hatching, OnlyTheFacesInThePlaneWhenOneIsGiven) {
+  // A section's cut faces: of a unit box only the top, z = 1 facing up, lies in the plane z − 1 = 0 with
+  // normal +z; the bottom is parallel but elsewhere, the walls are across it.
+  const Solid box = gen::box({0, 0, 0}, {1, 1, 1});
+  HatchSpec spec;
+  spec.spacing = 0.25;
+  spec.angle_deg = 0;
+  spec.only_in_plane = Plane{{0, 0, 1}, -1};
+  spec.in_plane_tolerance = 1e-12;
+  const Solid h = hatched(box, spec);
+  const auto lines = hatch_lines(h);
+  ASSERT_EQ(lines.size(), 4u);
+  for (const HatchLine& l : lines) EXPECT_EQ(l.face, face_facing(h, {0, 0, 1}));
+  EXPECT_EQ(hatch_line_bound(box, spec), 4u);
+  // The same plane facing down matches no face (the top faces up); off by more than the tolerance, none.
+  spec.only_in_plane = Plane{{0, 0, -1}, 1};
+  EXPECT_TRUE(hatch_lines(hatched(box, spec)).empty());
+  spec.only_in_plane = Plane{{0, 0, 1}, -1 - 1e-9};
+  EXPECT_TRUE(hatch_lines(hatched(box, spec)).empty());
+}
+
 TEST(Hatching, DiagonalLinesStopAtTheFacesEdges) {
   // At 45° on the top face of a 2 × 1 box, spacing √2/4 across: each line x − y = c runs between two
   // points of the outline, and its length is what the outline leaves of it.
