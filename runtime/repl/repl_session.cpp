@@ -262,7 +262,7 @@ std::optional<ReplSession::View> ReplSession::view(std::string& message) const {
   View v;
   try {
     v.scene = evaluate_frame(*program, frame_);
-    if (v.scene.cameras.empty()) {
+    if (v.scene.cameras.empty() && v.scene.views.empty()) {  // a sheet's view is looked through too
       message =
           "nothing to look through yet: the session declares no camera\n"
           "hint: camera main = lookat(eye: (30, 20, 15), target: (0, 0, 0))\n";
