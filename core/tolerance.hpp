@@ -115,6 +115,16 @@ struct Tolerance {
   // above the rounding of the layout (~1e-12 mm), so lines that coincide in an orthographic view do.
   static constexpr double kCoincidentLineMm = 1e-3;
 
+  // ---- Sheets of views (core/device/page/sheet_layout.hpp, dimension_strokes.hpp).
+  // A scale within this relative slack of an ISO scale is that scale (1 − 1e-12 of 2 is still 2:1).
+  static constexpr double kIsoScaleRelative = 1e-12;
+  // A view's drawing this many mm past the margins still lies inside them (the layout's rounding).
+  static constexpr double kSheetMarginSlackMm = 1e-6;
+  // A dimension whose points fall closer than this on the page is not drawn (nothing to read between them).
+  static constexpr double kDimensionMinSpanMm = 0.1;
+  // A dimension line's page direction with an x component within this of 0 is upright (read bottom to top).
+  static constexpr double kDimensionUprightSlack = 1e-12;
+
   // ---- Devices.
   // HPGL: a sheet edge within this many plotter units of a whole unit is that unit (mm / unit is rarely
   // exact in binary, and the pen must never be sent one unit past the sheet nor lose one).

@@ -5,6 +5,7 @@
 
 #include "core/device/page/sheet_layout.hpp"
 #include "core/geometry/box3.hpp"
+#include "core/tolerance.hpp"
 #include "runtime/base/eval_error.hpp"
 
 namespace hlr::runtime {
@@ -166,7 +167,7 @@ std::vector<lang::Diagnostic> sheet_warnings(const FrameScene& scene, const Page
     }
     const Rect2& box = boxes[i];
     if (box.empty()) continue;
-    const double slack = 1e-6;
+    const double slack = Tolerance::kSheetMarginSlackMm;
     if (box.xmin < inside.xmin - slack || box.ymin < inside.ymin - slack || box.xmax > inside.xmax + slack ||
         box.ymax > inside.ymax + slack) {
       warn(v, "its drawing runs past the page's margins", "give it a smaller scale:, or move it");

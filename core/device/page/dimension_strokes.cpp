@@ -5,6 +5,8 @@
 #include <numbers>
 
 #include "core/device/page/stroke_text.hpp"
+#include "core/format_number.hpp"
+#include "core/tolerance.hpp"
 
 namespace hlr {
 
@@ -46,24 +48,25 @@ DimensionDrawing dimension_strokes(const PageDimension& d, const Camera& camera,
     }
   }
   const double span = length(u);
-  if (!(span >= 0.1)) {
-    out.problem = "its points fall together in this view (less than 0.1 mm apart along the dimension)";
+  if (!(span >= Tolerance::kDimensionMinSpanMm)) {
+    out.problem = "its points fall together in this view (less than " +
+                  format_mm_for_message(Tolerance::kDimensionMinSpanMm) + " mm apart along the dimension)";
     return out;
   }
   u = (1 / span) * u;
   // Read from left to right, or from the bottom up: the value's letters then stand upright.
-  if (u.x < -1e-12 || (std::abs(u.x) <= 1e-12 && u.y > 0)) {
+  constexpr double upright = Tolerance::kDimensionUprightSlack;
+  if (u.x < -upright || (std::abs(u.x) <= upright && u.y > 0)) {
     std::swap(a, b);
     u = -1 * u;
   }
   const Vector2 n{u.y, -u.x};  // up from the line (left of an upright one), page y growing downwards
-  // The dimension line, offset from the farther-out point (so both extension lines reach it).
-  const double reach = std::max(dot(a - Point2{0, 0}, n), dot(b - Point2{0, 0}, n));
-  const double level = d.offset_mm >= 0
-                           ? reach + d.offset_mm
-                           : std::min(dot(a - Point2{0, 0}, n), dot(b - Point2{0, 0}, n)) + d.offset_mm;
-  const Point2 a1 = a + (level - dot(a - Point2{0, 0}, n)) * n;
-  const Point2 b1 = b + (level - dot(b - Point2{0, 0}, n)) * n;
+  // The dimension line, offset from the farther-out point (so both extension lines reach it); heights
+  // are measured along n.
+  const double ha = dot(a - Point2{0, 0}, n), hb = dot(b - Point2{0, 0}, n);
+  const double level = d.offset_mm >= 0 ? std::max(ha, hb) + d.offset_mm : std::min(ha, hb) + d.offset_mm;
+  const Point2 a1 = a + (level - ha) * n;
+  const Point2 b1 = b + (level - hb) * n;
   const Vector2 out_dir = d.offset_mm >= 0 ? n : -1 * n;  // from the points towards the dimension line
   for (const auto& [p, p1] : {std::pair{a, a1}, std::pair{b, b1}}) {
     if (distance(p, p1) > kExtensionGapMm)

@@ -5,6 +5,8 @@
 #include <cstdio>
 #include <limits>
 
+#include "core/tolerance.hpp"
+
 namespace hlr {
 
 double world_per_picture_unit(const Camera& camera, double fallback_depth) {
@@ -19,7 +21,7 @@ double iso_scale_at_most(double mm_per_unit) {
   const double decade = std::pow(10.0, std::floor(std::log10(mm_per_unit)));
   double best = decade;
   for (const double step : {2.0, 5.0, 10.0})
-    if (step * decade <= mm_per_unit * (1 + 1e-12)) best = step * decade;
+    if (step * decade <= mm_per_unit * (1 + Tolerance::kIsoScaleRelative)) best = step * decade;
   return best;
 }
 
