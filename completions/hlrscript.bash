@@ -21,7 +21,7 @@ _hlrscript() {
       local files ext
       files=$(compgen -f -- "$cur")
       COMPREPLY=($(compgen -d -S / -- "$cur"))
-      for ext in pdf svg png hpgl plt gcode nc steps json jsonl dxf; do
+      for ext in pdf svg png hpgl plt gcode nc steps json jsonl dxf off obj stl; do
         COMPREPLY+=($(compgen -f -X "!*.$ext" -- "$cur"))
       done
       [[ -n $cur && $cur != *.* ]] && for ext in pdf svg png hpgl gcode json jsonl; do COMPREPLY+=("$cur.$ext"); done

@@ -66,7 +66,8 @@ bool inside_rings(const std::vector<std::vector<Plane2::Point_2>>& rings, const 
   return in;
 }
 
-// The triangles of face f, counter-clockwise seen from outside, as vertex indices.
+}  // namespace
+
 void face_triangles(const Solid& s, std::size_t f, std::vector<std::array<VertexIndex, 3>>& out) {
   const Face& face = s.faces[f];
   if (face.rings.size() == 1 && face.rings[0].vertices.size() == 3) {
@@ -109,6 +110,8 @@ void face_triangles(const Solid& s, std::size_t f, std::vector<std::array<Vertex
       out.push_back({i0, i2, i1});
   }
 }
+
+namespace {
 
 Mesh to_mesh(const Solid& s, std::size_t operand) {
   if (!s.closed)

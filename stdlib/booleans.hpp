@@ -9,6 +9,7 @@
 // crease classification (the largest of the operands' crease angles).
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <stdexcept>
 #include <string>
@@ -32,5 +33,10 @@ struct BooleanOperandError : std::runtime_error {
 // is not closed or crosses itself, std::runtime_error when the result is no valid solid (an empty
 // intersection or difference: "the result is empty").
 Solid boolean_solid(BooleanOp op, const std::vector<const Solid*>& operands);
+
+// Appends the triangles of face f of s, counter-clockwise seen from outside, as vertex indices: the face's
+// own triangle, or a constrained Delaunay triangulation of all its rings (holes and islands filled
+// even-odd, as faces are) in exact predicates. Used by the booleans and by mesh export.
+void face_triangles(const Solid& s, std::size_t f, std::vector<std::array<VertexIndex, 3>>& out);
 
 }  // namespace hlr::stdlib

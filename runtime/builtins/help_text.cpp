@@ -37,7 +37,7 @@ const StatementHelp kStatements[] = {
     {"animate", "animate frames N [fps F]",
      "Makes the script a sequence: it runs once per frame with frame, t and time bound."},
     {"output", "output \"name-{frame:03}.pdf\" [paper SIZE ...] [plotter NAME]",
-     "Where the drawing goes (.pdf .svg .png .hpgl .gcode .steps .json .jsonl .dxf); -o overrides it."},
+     "Where the drawing goes (.pdf .svg .png .hpgl .gcode .steps .json .jsonl .dxf .off .obj .stl); -o overrides it."},
     {"paper", "paper SIZE [landscape|portrait] [(margin: MM, scale: MM_PER_UNIT, fit: F, title: TEXT)]",
      "The page: A4, A3, letter, ... or custom (width: W, height: H)."},
     {"style", "style hidden dashed|off|levels N [pen P]",

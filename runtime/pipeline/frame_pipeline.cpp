@@ -201,6 +201,7 @@ void run_frame(const Program& program, int frame, double fps, const PipelineOpti
   frame_out.segments = &result.segments;
   frame_out.object_names = &r.object_names;
   frame_out.hidden = settings.hidden;
+  frame_out.scene = &scene.scene;
   if (sheet) {
     SheetTitle title;
     title.framed = options.run.device.decorations;

@@ -68,7 +68,8 @@ std::string output_problem(const fs::path& path, const Program& program) {
 OutputTarget target_for_frame(const std::optional<std::string>& cli_pattern, const FrameName& frame,
                               std::size_t index, const Program& program) {
   const std::string hint =
-      "choose a name ending in .pdf, .svg, .png, .hpgl, .gcode, .steps, .json, .jsonl or .dxf that is not an input "
+      "choose a name ending in .pdf, .svg, .png, .hpgl, .gcode, .steps, .json, .jsonl, .dxf, .off, .obj or "
+      ".stl that is not an input "
       "file";
   OutputTarget target;
   if (cli_pattern) {

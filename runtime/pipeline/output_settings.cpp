@@ -9,6 +9,7 @@
 #include "core/limits.hpp"
 #include "runtime/base/eval_error.hpp"
 #include "runtime/pipeline/frame_pipeline.hpp"
+#include "stdlib/mesh_export.hpp"
 
 namespace hlr::runtime {
 
@@ -181,6 +182,12 @@ std::shared_ptr<const Device> device_for(DeviceKind kind, const FrameScene& scen
       dxf.pens = pen_table_for(scene, d);
       return make_dxf_device(dxf);
     }
+    case DeviceKind::Off:
+      return stdlib::make_mesh_device(stdlib::MeshFormat::Off, run.title);
+    case DeviceKind::Obj:
+      return stdlib::make_mesh_device(stdlib::MeshFormat::Obj, run.title);
+    case DeviceKind::Stl:
+      return stdlib::make_mesh_device(stdlib::MeshFormat::Stl, run.title);
     case DeviceKind::Json:
     case DeviceKind::JsonLines: {
       JsonOptions json;

@@ -11,6 +11,7 @@
 #include <ostream>
 
 #include "core/device/page/atomic_file.hpp"
+#include "core/device/page/device.hpp"
 #include "core/hlr/render_frame.hpp"
 #include "runtime/base/eval_error.hpp"
 #include "runtime/base/file_access.hpp"
@@ -270,10 +271,13 @@ int run_loaded_program(const Program& program, const RunOptions& o, std::ostream
           << " faces drawn in all, cameras: " << cameras << "; would write " << files << "\n";
       return kExitOk;
     }
+    // A mesh file holds the solids' faces, not the drawing's segments.
+    const std::optional<DeviceKind> kind = device_kind_for(result.files.front());
+    const bool mesh = kind == DeviceKind::Off || kind == DeviceKind::Obj || kind == DeviceKind::Stl;
     char line[256];
-    std::snprintf(line, sizeof line, ": %zu %s, %zu segments in %.2f s\n", result.frame_count,
-                  result.frame_count == 1 ? "frame" : "frames", segments,
-                  std::chrono::duration<double>(Clock::now() - start).count());
+    std::snprintf(line, sizeof line, ": %zu %s, %zu %s in %.2f s\n", result.frame_count,
+                  result.frame_count == 1 ? "frame" : "frames", mesh ? faces : segments,
+                  mesh ? "faces" : "segments", std::chrono::duration<double>(Clock::now() - start).count());
     out << "wrote " << files << line;
     if (notes > 0)
       err << "hlrscript: " << notes << (notes == 1 ? " note" : " notes")

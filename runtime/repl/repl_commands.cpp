@@ -36,7 +36,7 @@ const Command kCommands[] = {
     {"reload", ":reload", "read the loaded script again"},
     {"show", ":show", "draw the current frame in the terminal"},
     {"render", ":render [FILE]",
-     "write the session's frames to FILE (.pdf .svg .png .hpgl .gcode .steps .json .jsonl .dxf)"},
+     "write the session's frames to FILE (.pdf .svg .png .hpgl .gcode .steps .json .jsonl .dxf .off .obj .stl)"},
     {"camera", ":camera [NAME]", "draw with camera NAME (no name: the last declared)"},
     {"orbit", ":orbit DTHETA [DPHI]",
      "step the camera round the scene (degrees; Albers' theta and phi keys)"},

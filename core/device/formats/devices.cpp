@@ -27,6 +27,9 @@ std::optional<DeviceKind> device_kind_for(const fs::path& path) {
   if (ext == ".jsonl") return DeviceKind::JsonLines;
   if (ext == ".gcode" || ext == ".nc" || ext == ".ngc") return DeviceKind::Gcode;
   if (ext == ".dxf") return DeviceKind::Dxf;
+  if (ext == ".off") return DeviceKind::Off;
+  if (ext == ".obj") return DeviceKind::Obj;
+  if (ext == ".stl") return DeviceKind::Stl;
   return std::nullopt;
 }
 
@@ -50,6 +53,12 @@ const char* device_kind_name(DeviceKind kind) {
       return "G-code";
     case DeviceKind::Dxf:
       return "DXF";
+    case DeviceKind::Off:
+      return "OFF";
+    case DeviceKind::Obj:
+      return "OBJ";
+    case DeviceKind::Stl:
+      return "STL";
   }
   return "?";
 }
@@ -59,7 +68,7 @@ bool one_frame_per_file(DeviceKind kind) {
 }
 
 const char* supported_extensions() {
-  return "pdf, svg, png, hpgl (or .plt), steps, json, jsonl, gcode (or .nc), dxf";
+  return "pdf, svg, png, hpgl (or .plt), steps, json, jsonl, gcode (or .nc), dxf, off, obj, stl";
 }
 
 namespace {
@@ -319,6 +328,9 @@ class DxfDevice : public OneFrameDevice {
 };
 
 }  // namespace
+
+std::unique_ptr<DeviceFile> open_byte_file(const fs::path& path) { return std::make_unique<ByteFile>(path); }
+DevicePlanning page_device_planning() { return page_planning(); }
 
 std::unique_ptr<Device> make_dxf_device(const DxfOptions& options) {
   return std::make_unique<DxfDevice>(options);

@@ -34,4 +34,9 @@ std::unique_ptr<Device> make_dxf_device(const DxfOptions& options);
 // with the profile's feeds and dwells for the time estimate.
 std::unique_ptr<Device> make_gcode_device(const GcodeProfile& profile, const GcodeOptions& options = {});
 
+// For devices made elsewhere (mesh export, stdlib/mesh_export.hpp): a file that takes each frame's bytes
+// as they come, and the planning of a page that goes to no plotter.
+std::unique_ptr<DeviceFile> open_byte_file(const std::filesystem::path& path);
+DevicePlanning page_device_planning();
+
 }  // namespace hlr

@@ -19,6 +19,7 @@
 
 #include "core/camera/camera.hpp"
 #include "core/device/page/page_plot.hpp"
+#include "core/hlr/scene.hpp"
 #include "core/hlr/visible_segment.hpp"
 
 namespace hlr {
@@ -45,6 +46,8 @@ struct DeviceFrame {
   // A sheet of views (runtime/pipeline/sheet_render.hpp): each view's camera, layout and share of
   // `segments`; null or empty for a page of one camera.
   const std::vector<SheetView>* views = nullptr;
+  // The solids drawn, in world space (what mesh export writes); null where the caller has none.
+  const Scene* scene = nullptr;
 };
 
 // A frame's share of a file, made by encode() on any thread.
@@ -80,12 +83,12 @@ class Device {
 };
 
 // The file types, by extension (any case): .pdf .svg .png .hpgl/.plt/.hpg .steps .json, JSON Lines
-// .jsonl, and G-code .gcode/.nc/.ngc.
-enum class DeviceKind { Pdf, Svg, Png, Hpgl, Steps, Json, JsonLines, Gcode, Dxf };
+// .jsonl, G-code .gcode/.nc/.ngc, .dxf, and the meshes .off .obj .stl (the solids, not the page).
+enum class DeviceKind { Pdf, Svg, Png, Hpgl, Steps, Json, JsonLines, Gcode, Dxf, Off, Obj, Stl };
 std::optional<DeviceKind> device_kind_for(const std::filesystem::path& path);
 const char* device_kind_name(DeviceKind kind);  // "PDF", "SVG", ..., "plotter-steps", "JSON"
 bool one_frame_per_file(DeviceKind kind);
-// "pdf, svg, png, hpgl (or .plt), steps, json, jsonl, gcode (or .nc), dxf": for messages.
+// "pdf, svg, png, hpgl (or .plt), steps, json, jsonl, gcode (or .nc), dxf, off, obj, stl": for messages.
 const char* supported_extensions();
 
 }  // namespace hlr
