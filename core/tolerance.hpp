@@ -124,6 +124,8 @@ struct Tolerance {
   static constexpr double kDimensionMinSpanMm = 0.1;
   // A dimension line's page direction with an x component within this of 0 is upright (read bottom to top).
   static constexpr double kDimensionUprightSlack = 1e-12;
+  // An angle dimension's arc is drawn as chords that leave it by at most this many mm: half a pen step.
+  static constexpr double kDimensionArcChordMm = 0.01;
 
   // ---- Devices.
   // HPGL: a sheet edge within this many plotter units of a whole unit is that unit (mm / unit is rarely

@@ -244,8 +244,9 @@ std::string dump(const Stmt& stmt) {
             return "(plotter " + s.name.text + " (entries" + arguments_text(s.entries) + "))";
           },
           [](const DimensionStmt& s) {
-            return "(dimension " + dump(*s.from) + " " + dump(*s.to) + (s.view ? " in " + s.view->text : "") +
-                   " (options" + arguments_text(s.options) + "))";
+            return "(dimension " + (s.vertex ? "angle " + dump(*s.vertex) + " " : std::string()) +
+                   dump(*s.from) + " " + dump(*s.to) + (s.view ? " in " + s.view->text : "") + " (options" +
+                   arguments_text(s.options) + "))";
           },
           [](const ViewStmt& s) {
             return "(view " + s.name.text + " " + dump(*s.camera) + " at page " + dump(*s.point) +

@@ -223,7 +223,8 @@ struct ViewStmt {  // view NAME = CAMERA at page (X, Y) [KEY: EXPR ...]
   ExprPtr point;
   std::vector<Argument> options;  // as written; the runtime checks them
 };
-struct DimensionStmt {  // dimension from P to Q [in VIEW] [KEY: EXPR ...]
+struct DimensionStmt {  // dimension [angle at V] from P to Q [in VIEW] [KEY: EXPR ...]
+  ExprPtr vertex;  // an angle's vertex; null for a distance
   ExprPtr from;
   ExprPtr to;
   std::optional<Name> view;       // absent: the sheet's only view

@@ -628,6 +628,10 @@ struct action<g::dimension_stmt> {
   static void apply(const Input& in, ParseState& s) {
     make_statement(span_of(in, s), s, [](auto it, auto end) {
       DimensionStmt dimension;
+      // An angle has three points before the view's name and the options, a distance two.
+      int points = 0;
+      for (auto j = it; j != end && holds<Expr>(*j); ++j) ++points;
+      if (points == 3) dimension.vertex = box(take<Expr>(*it++));
       dimension.from = box(take<Expr>(*it++));
       dimension.to = box(take<Expr>(*it++));
       if (it != end && holds<Name>(*it)) dimension.view = take<Name>(*it++);

@@ -156,6 +156,7 @@ struct key_view : key< TAO_PEGTL_STRING( "view" ) > {};
 struct key_dimension : key< TAO_PEGTL_STRING( "dimension" ) > {};
 struct key_from : key< TAO_PEGTL_STRING( "from" ) > {};
 struct key_to : key< TAO_PEGTL_STRING( "to" ) > {};
+struct key_angle : key< TAO_PEGTL_STRING( "angle" ) > {};
 struct solid_word : sor< key_vertex, key_face, key_hole, key_line > {};
 
 struct name : seq< not_at< reserved >, identifier > {};
@@ -523,15 +524,19 @@ struct view_option : seq< arg_label, sp, must< view_option_value > > {};
 struct view_stmt : seq< key_view, sp, must< view_name >, sp, must< camera_eq >, sp, must< view_camera >, sp,
                         must< view_at >, sp, must< view_page >, sp, must< view_point >, star< sp, view_option > > {};
 
-// dimension from P to Q [in VIEW] [KEY: EXPR ...]: the distance between two world points drawn in a view of
-// the sheet; options (offset:, direction:, text:, precision:, pen:) as a view's.
+// dimension [angle at V] from P to Q [in VIEW] [KEY: EXPR ...]: the distance between two world points, or
+// the angle P V Q, drawn in a view of the sheet; options (offset:, direction:, radius:, text:, precision:,
+// unit:, pen:) as a view's.
+struct dimension_angle_at : key_at {};
+struct dimension_vertex : seq< expression > {};
+struct dimension_angle : seq< key_angle, sp, must< dimension_angle_at >, sp, must< dimension_vertex > > {};
 struct dimension_from : key_from {};
 struct dimension_start : seq< expression > {};
 struct dimension_to : key_to {};
 struct dimension_end : seq< expression > {};
 struct dimension_view : name {};
 struct dimension_in : seq< key_in, sp, must< dimension_view > > {};
-struct dimension_stmt : seq< key_dimension, sp, must< dimension_from >, sp, must< dimension_start >, sp,
+struct dimension_stmt : seq< key_dimension, sp, opt< dimension_angle, sp >, must< dimension_from >, sp, must< dimension_start >, sp,
                              must< dimension_to >, sp, must< dimension_end >, opt< sp, dimension_in >,
                              star< sp, view_option > > {};
 

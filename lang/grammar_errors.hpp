@@ -160,7 +160,9 @@ HLR_ERROR(view_at, "expected 'at page (X, Y)' after the view's camera, as in 'vi
 HLR_ERROR(view_page, "expected 'page' after 'at': a view goes at a page point, as in 'at page (80, 60)'");
 HLR_ERROR(view_point, "expected the page point after 'at page', millimetres from the top-left corner, as in '(80, 60)'");
 HLR_ERROR(view_option_value, "expected a value after the option's name and ':', as in 'scale: 0.5'");
-HLR_ERROR(dimension_from, "expected 'from' after 'dimension', as in 'dimension from (0, 0, 0) to (80, 0, 0) in front'");
+HLR_ERROR(dimension_angle_at, "expected 'at' and the angle's vertex after 'angle', as in 'dimension angle at (0, 0, 0) from (1, 0, 0) to (0, 1, 0) in front'");
+HLR_ERROR(dimension_vertex, "expected the angle's vertex, a world point, after 'at', as in 'dimension angle at (0, 0, 0) from (1, 0, 0) to (0, 1, 0) in front'");
+HLR_ERROR(dimension_from, "expected 'from' (or 'angle at V from') after 'dimension', as in 'dimension from (0, 0, 0) to (80, 0, 0) in front'");
 HLR_ERROR(dimension_start, "expected the first world point after 'from', as in 'dimension from (0, 0, 0) to (80, 0, 0) in front'");
 HLR_ERROR(dimension_to, "expected 'to' and the second point, as in 'dimension from (0, 0, 0) to (80, 0, 0) in front'");
 HLR_ERROR(dimension_end, "expected the second world point after 'to', as in 'dimension from (0, 0, 0) to (80, 0, 0) in front'");

@@ -105,6 +105,7 @@ class Checker {
   }
   void visit(const Stmt&, const PlotterStmt& s) { arguments(s.entries); }
   void visit(const Stmt&, const DimensionStmt& s) {
+    if (s.vertex) expr(*s.vertex);
     expr(*s.from);
     expr(*s.to);
     arguments(s.options);

@@ -37,7 +37,8 @@ const StatementHelp kStatements[] = {
     {"animate", "animate frames N [fps F]",
      "Makes the script a sequence: it runs once per frame with frame, t and time bound."},
     {"output", "output \"name-{frame:03}.pdf\" [paper SIZE ...] [plotter NAME]",
-     "Where the drawing goes (.pdf .svg .png .hpgl .gcode .steps .json .jsonl .dxf .off .obj .stl); -o overrides it."},
+     "Where the drawing goes (.pdf .svg .png .hpgl .gcode .steps .json .jsonl .dxf .off .obj .stl); -o "
+     "overrides it."},
     {"paper", "paper SIZE [landscape|portrait] [(margin: MM, scale: MM_PER_UNIT, fit: F, title: TEXT)]",
      "The page: A4, A3, letter, ... or custom (width: W, height: H)."},
     {"style", "style hidden dashed|off|levels N [pen P]",
@@ -53,9 +54,11 @@ const StatementHelp kStatements[] = {
      "Places a camera's drawing on the sheet, its target at page (X, Y) mm; a script with views draws them "
      "all on each page, each with its own hidden lines, labelled, with a title block."},
     {"dimension",
-     "dimension from P to Q [in VIEW] [offset: MM] [direction: D] [text: T] [precision: N] [pen: N]",
-     "Draws the distance between two world points in a view of the sheet: extension lines, a dimension line "
-     "with arrowheads and the value in single-stroke letters, hidden by nothing."},
+     "dimension [angle at V] from P to Q [in VIEW] [offset: MM] [direction: D] [radius: MM] [extend: LEGS] "
+     "[text: T] [precision: N] [unit: U] [pen: N]",
+     "Draws the distance between two world points (or with 'angle at V', the angle P V Q) in a view of the "
+     "sheet: extension lines, a dimension line (or an arc) with arrowheads and the value in single-stroke "
+     "letters, hidden by nothing."},
 };
 
 const BuiltinFunction* builtin_function(const std::string& name) {

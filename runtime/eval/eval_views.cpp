@@ -35,12 +35,18 @@ const OptionList& dimension_options() {
       "offset: 12",
       "a dimension's options are offset: millimetres from the points to the dimension line (default 10; "
       "negative: below, or right of an upright one), direction: \"aligned\" (the true distance, the "
-      "default), \"horizontal\" or \"vertical\" (along the view's right or up), text: written instead of "
-      "the value, precision: decimals at most (0 to 6, default 2) and pen: its pen (default 1)",
+      "default), \"horizontal\" or \"vertical\" (along the view's right or up), radius: an angle's arc "
+      "in millimetres (default 15), extend: \"from\", \"to\" or \"both\" (the legs that are no edge of the "
+      "part, drawn from the vertex), text: written instead of the value, precision: decimals at most (0 to "
+      "6, default 2), unit: \"mm\" (the default), \"cm\", \"m\" or \"in\" (a world unit read as a "
+      "millimetre) and pen: its pen (default 1)",
       {{"offset", ValueKind::Number},
        {"direction", ValueKind::String},
+       {"radius", ValueKind::Number},
+       {"extend", ValueKind::String},
        {"text", ValueKind::String},
        {"precision", ValueKind::Number},
+       {"unit", ValueKind::String},
        {"pen", ValueKind::Number}}};
   return list;
 }
@@ -135,11 +141,44 @@ void Evaluator::exec_dimension(const lang::DimensionStmt& dimension, const lang:
     return Point3{p.x, p.y, p.z};
   };
   PageDimension& d = setting.dimension;
+  if (dimension.vertex) d.vertex = point(*dimension.vertex, "at");
   d.from = point(*dimension.from, "from");
   d.to = point(*dimension.to, "to");
   const OptionList& list = dimension_options();
   const GivenOptions given =
       check_options(dimension.options, list, [&](const lang::Expr& e) { return eval(e, scope); });
+  // Each option belongs to distances or to angles; the other kind would silently ignore it.
+  for (const char* name : {"offset", "direction", "unit"})
+    if (const GivenOption* o = find(given, name); o && d.vertex)
+      fail(o->span,
+           std::string("'") + name +
+               ":' is for a distance; an angle takes radius:, extend:, text:, precision: and pen:",
+           "write radius: MM for the arc's size");
+  for (const char* name : {"radius", "extend"})
+    if (const GivenOption* o = find(given, name); o && !d.vertex)
+      fail(o->span,
+           std::string("'") + name + ":' is for an angle, written 'dimension angle at V from P to Q'",
+           "a distance takes offset: MM for where its line goes");
+  if (const GivenOption* o = find(given, "extend")) {
+    const std::string& word = o->value.as_string();
+    if (word != "from" && word != "to" && word != "both")
+      fail(o->span, list.who + "option 'extend' must be \"from\", \"to\" or \"both\", got \"" + word + "\"",
+           list.hint);
+    d.extend_from = word != "to";
+    d.extend_to = word != "from";
+  }
+  if (const GivenOption* o = find(given, "radius"))
+    d.radius_mm = number_in(
+        *o, list, [](double x) { return x >= 1 && x <= kMaxPaperSideMm; },
+        "from 1 to " + format_for_message(kMaxPaperSideMm) + " millimetres");
+  if (const GivenOption* o = find(given, "unit")) {
+    const std::string& word = o->value.as_string();
+    if (const std::optional<DimensionUnit> unit = dimension_unit_named(word))
+      d.unit = *unit;
+    else
+      fail(o->span, list.who + "option 'unit' must be \"mm\", \"cm\", \"m\" or \"in\", got \"" + word + "\"",
+           list.hint);
+  }
   if (const GivenOption* o = find(given, "offset"))
     d.offset_mm = number_in(
         *o, list, [](double x) { return std::abs(x) <= kMaxPaperSideMm; },

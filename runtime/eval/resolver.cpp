@@ -198,6 +198,7 @@ class Resolver {
                      options(s.options, scope);
                    },
                    [&](const lang::DimensionStmt& s) {
+                     if (s.vertex) expr(*s.vertex, scope);
                      expr(*s.from, scope);
                      expr(*s.to, scope);
                      options(s.options, scope);

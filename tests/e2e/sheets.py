@@ -131,6 +131,25 @@ letters = [p for s in pen2 for p in s if p[1] > 77.5]
 if not letters or not all(95 < p[0] < 105 for p in letters):
     fail("the value is not written under the dimension line's middle")
 
+# ---- an angle ----
+# The front view's bottom-left corner, world (-2, -1, 0) at page (80, 65): the angle between the bottom edge
+# (towards +x, page +x) and the left edge (up, page −y) is 90°, an arc of radius 8 mm about (80, 65) from
+# (88, 65) to (80, 57) in pen 3, and "90°" outside it, up and to the right.
+ANGLED = BOXES + 'dimension angle at (-2, -1, 0) from (2, -1, 0) to (-2, -1, 1) in front radius: 8 pen: 3\n'
+out, _ = run("angled", ANGLED, "--plain")
+frame = json.load(open(out))["frames"][0]
+pen3 = [p for s, pen in zip(frame["strokes"], frame["stroke_pens"]) if pen == 3 for p in s]
+on_arc = [p for p in pen3 if abs(math.dist(p, (80, 65)) - 8) < 1e-6]
+if not any(math.dist(p, (88, 65)) < EPS for p in on_arc) or not any(math.dist(p, (80, 57)) < EPS for p in on_arc):
+    fail("the angle's arc does not run from (88, 65) to (80, 57)")
+if any(p[0] < 80 - EPS or p[1] > 65 + EPS for p in on_arc):
+    fail("the angle's arc leaves the quarter between its legs")
+outside = [p for p in pen3 if math.dist(p, (80, 65)) > 9]
+if not outside or not all(p[0] > 80 and p[1] < 65 for p in outside):
+    fail("the angle's value is not written outside the arc, between the legs")
+if len(pen3) < 10:
+    fail("the angle dimension has too few strokes for an arc, two arrowheads and '90°'")
+
 # ---- a section ----
 # A 4 × 2 × 1 box cut by the plane y = 1, the half towards −y removed: the cut face is the rectangle x 0 … 4,
 # z 0 … 1 at y = 1, and it alone is hatched, 0.25 apart at 45°: every hatch piece lies in it, and their
