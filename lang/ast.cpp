@@ -248,6 +248,9 @@ std::string dump(const Stmt& stmt) {
                    dump(*s.from) + " " + dump(*s.to) + (s.view ? " in " + s.view->text : "") + " (options" +
                    arguments_text(s.options) + "))";
           },
+          [](const ViewsStmt& s) {
+            return "(views " + dump(*s.object) + " (options" + arguments_text(s.options) + "))";
+          },
           [](const ViewStmt& s) {
             return "(view " + s.name.text + " " + dump(*s.camera) + " at page " + dump(*s.point) +
                    " (options" + arguments_text(s.options) + "))";
@@ -263,9 +266,9 @@ std::string dump(const Script& script) {
 }
 
 const char* statement_keyword(const Stmt& stmt) {
-  static constexpr const char* names[] = {"solid",   "let",    "def",     "return", "for",   "if",
-                                          "draw",    "camera", "animate", "output", "paper", "style",
-                                          "include", "pen",    "plotter", "label",  "view",  "dimension"};
+  static constexpr const char* names[] = {
+      "solid", "let",   "def",     "return", "for",     "if",    "draw", "camera", "animate",  "output",
+      "paper", "style", "include", "pen",    "plotter", "label", "view", "views",  "dimension"};
   static_assert(std::size(names) == std::variant_size_v<decltype(Stmt::node)>);
   return names[stmt.node.index()];
 }

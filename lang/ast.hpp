@@ -223,8 +223,12 @@ struct ViewStmt {  // view NAME = CAMERA at page (X, Y) [KEY: EXPR ...]
   ExprPtr point;
   std::vector<Argument> options;  // as written; the runtime checks them
 };
+struct ViewsStmt {  // views of PART [KEY: EXPR ...]
+  ExprPtr object;
+  std::vector<Argument> options;  // as written; the runtime checks them
+};
 struct DimensionStmt {  // dimension [angle at V] from P to Q [in VIEW] [KEY: EXPR ...]
-  ExprPtr vertex;  // an angle's vertex; null for a distance
+  ExprPtr vertex;       // an angle's vertex; null for a distance
   ExprPtr from;
   ExprPtr to;
   std::optional<Name> view;       // absent: the sheet's only view
@@ -239,7 +243,7 @@ struct Stmt {
   SourceSpan span;
   std::variant<SolidStmt, LetStmt, DefStmt, ReturnStmt, ForStmt, IfStmt, DrawStmt, CameraStmt, AnimateStmt,
                OutputStmt, PaperStmt, StyleStmt, IncludeStmt, PenStmt, PlotterStmt, LabelStmt, ViewStmt,
-               DimensionStmt>
+               ViewsStmt, DimensionStmt>
       node;
 };
 

@@ -623,6 +623,19 @@ struct action<g::view_stmt> {
 };
 
 template <>
+struct action<g::views_stmt> {
+  template <typename Input>
+  static void apply(const Input& in, ParseState& s) {
+    make_statement(span_of(in, s), s, [](auto it, auto end) {
+      ViewsStmt views;
+      views.object = box(take<Expr>(*it++));
+      for (; it != end; ++it) views.options.push_back(take<Argument>(*it));
+      return views;
+    });
+  }
+};
+
+template <>
 struct action<g::dimension_stmt> {
   template <typename Input>
   static void apply(const Input& in, ParseState& s) {

@@ -157,6 +157,8 @@ struct key_dimension : key< TAO_PEGTL_STRING( "dimension" ) > {};
 struct key_from : key< TAO_PEGTL_STRING( "from" ) > {};
 struct key_to : key< TAO_PEGTL_STRING( "to" ) > {};
 struct key_angle : key< TAO_PEGTL_STRING( "angle" ) > {};
+struct key_views : key< TAO_PEGTL_STRING( "views" ) > {};
+struct key_of : key< TAO_PEGTL_STRING( "of" ) > {};
 struct solid_word : sor< key_vertex, key_face, key_hole, key_line > {};
 
 struct name : seq< not_at< reserved >, identifier > {};
@@ -524,6 +526,12 @@ struct view_option : seq< arg_label, sp, must< view_option_value > > {};
 struct view_stmt : seq< key_view, sp, must< view_name >, sp, must< camera_eq >, sp, must< view_camera >, sp,
                         must< view_at >, sp, must< view_page >, sp, must< view_point >, star< sp, view_option > > {};
 
+// views of PART [KEY: EXPR ...]: the standard views of a part — front, top and a side view placed in first-
+// or third-angle projection, and an isometric one — laid out on the sheet by the scale fit; options
+// (projection:, iso:, scale:, gap:, hidden:) as a view's. `views` is a keyword only before `of`.
+struct views_object : seq< expression > {};
+struct views_stmt : seq< key_views, sp, key_of, sp, must< views_object >, star< sp, view_option > > {};
+
 // dimension [angle at V] from P to Q [in VIEW] [KEY: EXPR ...]: the distance between two world points, or
 // the angle P V Q, drawn in a view of the sheet; options (offset:, direction:, radius:, text:, precision:,
 // unit:, pen:) as a view's.
@@ -545,7 +553,7 @@ struct include_stmt : seq< key_include, sp, must< include_path > > {};
 
 struct statement : sor< solid_stmt, let_stmt, def_stmt, return_stmt, for_stmt, if_stmt, draw_stmt, camera_stmt,
                         animate_stmt, output_stmt, paper_stmt, style_stmt, include_stmt, pen_stmt, plotter_stmt,
-                        label_stmt, view_stmt, dimension_stmt > {};
+                        label_stmt, views_stmt, view_stmt, dimension_stmt > {};
 
 // ---- the script ---------------------------------------------------------------------------------
 

@@ -160,6 +160,7 @@ HLR_ERROR(view_at, "expected 'at page (X, Y)' after the view's camera, as in 'vi
 HLR_ERROR(view_page, "expected 'page' after 'at': a view goes at a page point, as in 'at page (80, 60)'");
 HLR_ERROR(view_point, "expected the page point after 'at page', millimetres from the top-left corner, as in '(80, 60)'");
 HLR_ERROR(view_option_value, "expected a value after the option's name and ':', as in 'scale: 0.5'");
+HLR_ERROR(views_object, "expected the part after 'views of', as in 'views of bracket'");
 HLR_ERROR(dimension_angle_at, "expected 'at' and the angle's vertex after 'angle', as in 'dimension angle at (0, 0, 0) from (1, 0, 0) to (0, 1, 0) in front'");
 HLR_ERROR(dimension_vertex, "expected the angle's vertex, a world point, after 'at', as in 'dimension angle at (0, 0, 0) from (1, 0, 0) to (0, 1, 0) in front'");
 HLR_ERROR(dimension_from, "expected 'from' (or 'angle at V from') after 'dimension', as in 'dimension from (0, 0, 0) to (80, 0, 0) in front'");
@@ -169,7 +170,7 @@ HLR_ERROR(dimension_end, "expected the second world point after 'to', as in 'dim
 HLR_ERROR(dimension_view, "expected the name of a view after 'in', as in 'in front'");
 HLR_ERROR(include_path, "expected a quoted file name after 'include', as in 'include \"parts.hls\"'");
 HLR_ERROR(top_statement, "expected a statement");
-HLR_HINT(top_statement, "statements start with solid, let, def, for, if, draw, camera, animate, output, paper, style, pen, plotter, label, view, dimension or include");
+HLR_HINT(top_statement, "statements start with solid, let, def, for, if, draw, camera, animate, output, paper, style, pen, plotter, label, view, views of, dimension or include");
 
 // clang-format on
 

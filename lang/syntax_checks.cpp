@@ -110,6 +110,10 @@ class Checker {
     expr(*s.to);
     arguments(s.options);
   }
+  void visit(const Stmt&, const ViewsStmt& s) {
+    expr(*s.object);
+    arguments(s.options);
+  }
   void visit(const Stmt&, const ViewStmt& s) {
     expr(*s.camera);
     expr(*s.point);

@@ -13,7 +13,7 @@ mkdir -p "$out/tutorial" "$out/gallery"
 # views (its views are placed in page millimetres) on its own paper with its frame, at 24 dpi.
 picture() {
   local frames=() count
-  if grep -q '^view ' "$1"; then
+  if grep -qE '^(view|views of) ' "$1"; then
     "$hlrscript" "$1" -o "$2" --dpi 24 --line-width 0.5 >/dev/null 2>&1 || { echo "docs-images: $1 failed" >&2; return 1; }
     return
   fi
@@ -28,7 +28,7 @@ for script in examples/tutorial/*.hls; do
 done
 for script in examples/*/*.hls; do
   case $script in examples/tutorial/*) continue ;; esac
-  grep -q '^camera ' "$script" || continue  # solids the views include
+  grep -qE '^(camera|views of) ' "$script" || continue  # solids the views include
   group=$(basename "$(dirname "$script")")
   picture "$script" "$out/gallery/$group-$(basename "${script%.hls}").png"
 done

@@ -53,6 +53,10 @@ const StatementHelp kStatements[] = {
     {"view", "view NAME = CAMERA at page (X, Y) [scale: MM_PER_UNIT] [label: TEXT] [hidden: BOOL]",
      "Places a camera's drawing on the sheet, its target at page (X, Y) mm; a script with views draws them "
      "all on each page, each with its own hidden lines, labelled, with a title block."},
+    {"views",
+     "views of PART [projection: \"third\"|\"first\"] [iso: BOOL] [scale: S] [gap: MM] [hidden: BOOL]",
+     "Declares the part's standard views — front, top, right (left in first angle) and iso — laid out and "
+     "lined up on the sheet in third- or first-angle projection at one scale fitted to it."},
     {"dimension",
      "dimension [angle at V] from P to Q [in VIEW] [offset: MM] [direction: D] [radius: MM] [extend: LEGS] "
      "[text: T] [precision: N] [unit: U] [pen: N]",

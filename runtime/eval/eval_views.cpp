@@ -4,6 +4,8 @@
 #include <cctype>
 #include <cmath>
 
+#include "core/camera/ortho_camera.hpp"
+#include "core/geometry/box3.hpp"
 #include "core/limits.hpp"
 #include "runtime/eval/evaluator.hpp"
 #include "runtime/eval/option_list.hpp"
@@ -51,6 +53,24 @@ const OptionList& dimension_options() {
   return list;
 }
 
+const OptionList& views_options() {
+  static const OptionList list{
+      "views of: ",
+      "option",
+      "projection: \"first\"",
+      "the standard views' options are projection: \"third\" (the default: the top view above the front, "
+      "the right side to its right) or \"first\" (the top view below, the left side to the right), iso: "
+      "true or false (an isometric view beside them, the default true), scale: millimetres per unit (else "
+      "the paper's, else fitted to the sheet), gap: millimetres between the views (default 20) and hidden: "
+      "true or false (the orthographic views' hidden lines, whatever the style)",
+      {{"projection", ValueKind::String},
+       {"iso", ValueKind::Bool},
+       {"scale", ValueKind::Number},
+       {"gap", ValueKind::Number},
+       {"hidden", ValueKind::Bool}}};
+  return list;
+}
+
 std::string capitals(const std::string& name) {
   std::string out = name;
   for (char& c : out) c = c == '_' ? ' ' : static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
@@ -59,16 +79,106 @@ std::string capitals(const std::string& name) {
 
 }  // namespace
 
-void Evaluator::exec_view(const lang::ViewStmt& view, const lang::Stmt& stmt, const ScopePtr& scope) {
+void Evaluator::check_new_view(const std::string& name, const lang::SourceSpan& span) const {
   for (const ViewSetting& v : out_.views)
-    if (v.camera.name == view.name.text) {
+    if (v.camera.name == name) {
       lang::Diagnostic d;
-      d.span = view.name.span;
-      d.message = "view '" + view.name.text + "' is already declared";
+      d.span = span;
+      d.message = "view '" + name + "' is already declared";
       d.hint = "give each view its own name";
-      d.notes.push_back({v.name_span, "the first 'view " + v.camera.name + "' is here"});
+      d.notes.push_back({v.name_span, "the first view '" + v.camera.name + "' is here"});
       throw EvalError(std::move(d));
     }
+}
+
+void Evaluator::exec_views(const lang::ViewsStmt& views, const lang::Stmt& stmt, const ScopePtr& scope) {
+  // The part's bounding box: the views look at its centre from outside it.
+  const Value part = eval(*views.object, scope);
+  if (!part.is(ValueKind::Solid) && !part.is(ValueKind::Group) && !part.is(ValueKind::List))
+    fail(views.object->span,
+         "'views of' needs a solid, a group or a list of them, got " + kind_with_article(part.kind()),
+         "for example: views of bracket");
+  Scene solids;
+  std::vector<int> pens;
+  add_to_scene(part, Affine3{}, views.object->span, views.object->span, 1, solids, pens);
+  Box3 bounds;
+  for (const SceneObject& o : solids.objects)
+    for (const Point3& p : o.solid->vertices) bounds.include(p);
+  if (!(bounds.lo.x <= bounds.hi.x) || !(length(bounds.hi - bounds.lo) > 0))
+    fail(views.object->span, "the part has no size to look at", "give 'views of' a solid with faces");
+
+  const OptionList& list = views_options();
+  const GivenOptions given =
+      check_options(views.options, list, [&](const lang::Expr& e) { return eval(e, scope); });
+  bool third = true;
+  if (const GivenOption* o = find(given, "projection")) {
+    const std::string& word = o->value.as_string();
+    if (word != "first" && word != "third")
+      fail(o->span, list.who + "option 'projection' must be \"first\" or \"third\", got \"" + word + "\"",
+           list.hint);
+    third = word == "third";
+  }
+  const bool iso = find(given, "iso") ? find(given, "iso")->value.as_bool() : true;
+  ViewGridCell cell;
+  if (const GivenOption* o = find(given, "gap"))
+    cell.gap_mm = number_in(
+        *o, list, [](double x) { return x >= 0 && x <= kMaxPaperSideMm; },
+        "from 0 to " + format_for_message(kMaxPaperSideMm) + " millimetres");
+  std::optional<double> scale;
+  if (const GivenOption* o = find(given, "scale"))
+    scale = number_in(
+        *o, list, [](double x) { return x > 0 && x <= kMaxPaperSideMm; },
+        "above 0 millimetres per unit, at most " + format_for_message(kMaxPaperSideMm));
+  std::optional<bool> hidden;
+  if (const GivenOption* o = find(given, "hidden")) hidden = o->value.as_bool();
+
+  // Third angle: the top view above the front, the right side to its right, the isometric view top right.
+  // First angle: the top view below the front, the left side to its right, the isometric view bottom right.
+  const Point3 centre = lerp(bounds.lo, bounds.hi, 0.5);
+  const double away = 2 * length(bounds.hi - bounds.lo) + 1;
+  struct Standard {
+    const char* name;
+    Vector3 from;  // the eye's direction from the centre
+    Vector3 up;
+    int column, row;
+  };
+  std::vector<Standard> standard;
+  if (third)
+    standard = {{"front", {0, -1, 0}, {0, 0, 1}, 0, 1},
+                {"top", {0, 0, 1}, {0, 1, 0}, 0, 0},
+                {"right", {1, 0, 0}, {0, 0, 1}, 1, 1}};
+  else
+    standard = {{"front", {0, -1, 0}, {0, 0, 1}, 0, 0},
+                {"top", {0, 0, 1}, {0, 1, 0}, 0, 1},
+                {"left", {-1, 0, 0}, {0, 0, 1}, 1, 0}};
+  if (iso) standard.push_back({"iso", {1, -1, 1}, {0, 0, 1}, 1, third ? 0 : 1});
+  for (const Standard& s : standard) {
+    check_new_view(s.name, stmt.span);
+    ViewSetting setting;
+    setting.camera.name = s.name;
+    setting.camera.span = stmt.span;
+    setting.name_span = stmt.span;
+    OrthoParameters o;
+    o.eye = centre + (away / length(s.from)) * s.from;
+    o.target = centre;
+    o.up = s.up;
+    // The sheet's scale sets a view's size on the sheet; the height frames the part when one view is drawn
+    // alone (--camera front).
+    o.height = 1.2 * length(bounds.hi - bounds.lo);
+    setting.camera.camera = ortho_camera(o);
+    setting.grid = cell;
+    setting.grid->column = s.column;
+    setting.grid->row = s.row;
+    setting.mm_per_unit = scale;
+    setting.label = capitals(s.name);
+    // The isometric view shows the part's shape: without hidden lines unless asked.
+    setting.hidden = std::string(s.name) == "iso" ? std::optional<bool>(hidden.value_or(false)) : hidden;
+    out_.views.push_back(std::move(setting));
+  }
+}
+
+void Evaluator::exec_view(const lang::ViewStmt& view, const lang::Stmt& stmt, const ScopePtr& scope) {
+  check_new_view(view.name.text, view.name.span);
   ViewSetting setting;
   setting.camera.name = view.name.text;
   setting.camera.span = stmt.span;

@@ -104,6 +104,7 @@ Evaluator::Flow Evaluator::exec(const lang::Stmt& stmt, const ScopePtr& scope) {
           [&](const lang::PlotterStmt& s) { return exec_plotter(s, stmt, scope), Flow::Next; },
           [&](const lang::LabelStmt& s) { return exec_label(s, stmt, scope), Flow::Next; },
           [&](const lang::ViewStmt& s) { return exec_view(s, stmt, scope), Flow::Next; },
+          [&](const lang::ViewsStmt& s) { return exec_views(s, stmt, scope), Flow::Next; },
           [&](const lang::DimensionStmt& s) { return exec_dimension(s, stmt, scope), Flow::Next; },
       },
       stmt.node);

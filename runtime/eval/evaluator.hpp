@@ -81,6 +81,8 @@ class Evaluator {
   void exec_pen(const lang::PenStmt& pen, const lang::Stmt& stmt, const ScopePtr& scope);
   void exec_plotter(const lang::PlotterStmt& plotter, const lang::Stmt& stmt, const ScopePtr& scope);
   void exec_label(const lang::LabelStmt& label, const lang::Stmt& stmt, const ScopePtr& scope);
+  void exec_views(const lang::ViewsStmt& views, const lang::Stmt& stmt, const ScopePtr& scope);
+  void check_new_view(const std::string& name, const lang::SourceSpan& span) const;
   void exec_view(const lang::ViewStmt& view, const lang::Stmt& stmt,
                  const ScopePtr& scope);  // eval_views.cpp
   void exec_dimension(const lang::DimensionStmt& dimension, const lang::Stmt& stmt, const ScopePtr& scope);

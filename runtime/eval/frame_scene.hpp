@@ -84,9 +84,18 @@ struct LabelSetting {
 // view NAME = CAMERA at page (X, Y) [scale: S] [label: TEXT] [hidden: BOOL] [show: SOLIDS]: the camera's
 // drawing on the sheet (runtime/pipeline/sheet_render.hpp), its picture origin — the camera's target — at
 // page (X, Y) mm.
+// Where `views of PART` puts a view: a cell of a grid the sheet's layout sizes and centres on the page
+// (core/device/page/sheet_layout.hpp, grid_view_points), each column's views aligned along x and each row's
+// along y, as projections are.
+struct ViewGridCell {
+  int column = 0, row = 0;
+  double gap_mm = 20;  // between cells: room for dimensions
+};
+
 struct ViewSetting {
   NamedCamera camera;                 // the view's name, its camera and the statement's span
-  Point2 at_mm;                       // page millimetres from the top-left corner, y down
+  Point2 at_mm;                       // page millimetres from the top-left corner, y down; unset in a grid
+  std::optional<ViewGridCell> grid;   // placed by `views of`: at_mm comes from the layout
   std::optional<double> mm_per_unit;  // scale:; else the paper's, else the sheet's fitted scale
   std::string label;                  // label:; else the name in capitals ("": none)
   std::optional<bool> hidden;         // hidden:; else the sheet's style

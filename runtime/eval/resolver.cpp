@@ -188,6 +188,10 @@ class Resolver {
                      options(s.options, scope);
                    },
                    [&](const lang::PlotterStmt& s) { options(s.entries, scope); },
+                   [&](const lang::ViewsStmt& s) {
+                     expr(*s.object, scope);
+                     options(s.options, scope);
+                   },
                    [&](const lang::ViewStmt& s) {
                      // A bare name may be a camera declared before (the evaluator looks there when the
                      // name is bound to nothing).

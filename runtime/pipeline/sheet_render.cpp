@@ -10,6 +10,39 @@
 
 namespace hlr::runtime {
 
+namespace {
+
+// The views of `views of PART`: placed in their grid at one scale — theirs, else the paper's, else the
+// largest ISO scale at which the grid fits the sheet above the title block — which they then keep.
+void place_grid_views(const FrameScene& scene, const PageSpec& spec, bool framed,
+                      std::vector<SheetViewFit>& fits) {
+  std::vector<std::size_t> placed;
+  std::vector<GridViewFit> grid;
+  for (std::size_t i = 0; i < scene.views.size(); ++i)
+    if (const std::optional<ViewGridCell>& cell = scene.views[i].grid) {
+      placed.push_back(i);
+      grid.push_back({cell->column, cell->row, fits[i].extent, fits[i].label_band_mm});
+    }
+  if (placed.empty()) return;
+  const ViewSetting& first = scene.views[placed.front()];
+  const double gap = first.grid->gap_mm;
+  const SheetFrame sheet = sheet_frame(spec);
+  Rect2 area = sheet.frame;
+  area = {area.xmin + kViewGapMm, area.ymin + kViewGapMm, area.xmax - kViewGapMm, area.ymax - kViewGapMm};
+  if (framed && !sheet.title_block.empty())
+    area.ymax = std::min(area.ymax, sheet.title_block.ymin - kViewGapMm);
+  const double scale = first.mm_per_unit  ? *first.mm_per_unit
+                       : spec.mm_per_unit ? *spec.mm_per_unit
+                                          : fitted_grid_scale(grid, area, gap);
+  const std::vector<Point2> points = grid_view_points(grid, scale, area, gap);
+  for (std::size_t k = 0; k < placed.size(); ++k) {
+    fits[placed[k]].at_mm = points[k];
+    fits[placed[k]].mm_per_unit = scale;
+  }
+}
+
+}  // namespace
+
 SheetDrawing render_sheet(const FrameScene& scene, const PageSpec& spec, bool framed, HiddenStyle hidden,
                           const HlrOptions& hlr, const ViewRenderer& render) {
   SheetDrawing out;
@@ -93,23 +126,21 @@ SheetDrawing render_sheet(const FrameScene& scene, const PageSpec& spec, bool fr
     fit.label_band_mm = v.label.empty() ? 0 : kViewLabelBandMm;
     fits.push_back(fit);
   }
+  place_grid_views(scene, spec, framed, fits);
   const double sheet_scale =
       fitted_sheet_scale(fits, spec, framed ? sheet_frame(spec).title_block : Rect2::none());
   // The title block's scale: the sheet's when a view is drawn at it, else the views' own when they share
   // one, else "AS SHOWN"; a view at another scale says so under it, as drawings do: "DETAIL (2:1)".
   std::optional<double> title_scale;
-  if (std::any_of(scene.views.begin(), scene.views.end(),
-                  [](const ViewSetting& v) { return !v.mm_per_unit; }))
+  if (std::any_of(fits.begin(), fits.end(), [](const SheetViewFit& f) { return !f.mm_per_unit; }))
     title_scale = sheet_scale;
-  else if (std::all_of(scene.views.begin(), scene.views.end(), [&](const ViewSetting& v) {
-             return v.mm_per_unit == scene.views.front().mm_per_unit;
-           }))
-    title_scale = scene.views.front().mm_per_unit;
+  else if (std::all_of(fits.begin(), fits.end(),
+                       [&](const SheetViewFit& f) { return f.mm_per_unit == fits.front().mm_per_unit; }))
+    title_scale = fits.front().mm_per_unit;
   out.scale_text = title_scale ? scale_ratio_text(*title_scale) : "AS SHOWN";
   for (std::size_t i = 0; i < out.views.size(); ++i) {
-    const ViewSetting& v = scene.views[i];
-    const double scale = v.mm_per_unit.value_or(sheet_scale);
-    out.views[i].layout = view_layout(spec.paper, v.at_mm, scale * per_picture[i]);
+    const double scale = fits[i].mm_per_unit.value_or(sheet_scale);
+    out.views[i].layout = view_layout(spec.paper, fits[i].at_mm, scale * per_picture[i]);
     out.views[i].mm_per_world_unit = scale;
     if (!out.views[i].label.empty() && scale != title_scale)
       out.views[i].label += " (" + scale_ratio_text(scale) + ")";
@@ -159,7 +190,7 @@ std::vector<lang::Diagnostic> sheet_warnings(const FrameScene& scene, const Page
   const Rect2 title = framed ? sheet_frame(spec).title_block : Rect2::none();
   for (std::size_t i = 0; i < scene.views.size() && i < boxes.size(); ++i) {
     const ViewSetting& v = scene.views[i];
-    if (!inside.contains(v.at_mm)) {
+    if (!v.grid && !inside.contains(v.at_mm)) {  // a grid's views are placed inside
       warn(v, "its point lies outside the page's margins",
            "put it within the margins, as in 'at page (" + std::to_string(int(w / 2)) + ", " +
                std::to_string(int(h / 2)) + ")'");

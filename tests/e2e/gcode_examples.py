@@ -163,42 +163,62 @@ def json_segments(doc, origin):
 def merge_collinear(segs):
     """Segments of one pen that continue one another in a straight line through a point no other segment
     of that pen touches, as one: two plans on different grids may keep or drop such a point (where a closed
-    stroke starts, or a node snapped on one grid only)."""
+    stroke starts, or a node snapped on one grid only). Each point is judged by its own two segments as
+    given, on the grid's whole numbers both files' points share, so the answer does not depend on the order
+    the files list their segments in."""
     segs = [(pen, tuple(a), tuple(b)) for pen, a, b in segs if math.dist(a, b) > TOL]
 
     def node(pen, p):
         return (pen, round(p[0] / GRID), round(p[1] / GRID))
 
-    alive = set(range(len(segs)))
     at = {}
     for i, (pen, a, b) in enumerate(segs):
-        at.setdefault(node(pen, a), set()).add(i)
-        at.setdefault(node(pen, b), set()).add(i)
-    for n in list(at):
-        ends = at[n]
-        if len(ends) != 2:
+        at.setdefault(node(pen, a), []).append(i)
+        at.setdefault(node(pen, b), []).append(i)
+    # The points a straight line runs through: exactly two segments end there, in line and onward.
+    through = {}
+    for n, ends in at.items():
+        if len(ends) != 2 or ends[0] == ends[1]:
             continue
-        i, j = sorted(ends)
-        if i == j:
-            continue
+        i, j = ends
         pen, a, b = segs[i]
         _, c, d = segs[j]
-        # Orient both through the shared point: i arrives at it, j leaves it.
         if node(pen, a) == n:
             a, b = b, a
         if node(pen, d) == n:
             c, d = d, c
-        u, v = (b[0] - a[0], b[1] - a[1]), (d[0] - c[0], d[1] - c[1])
+        ga, gb, gc, gd = ([round(q / GRID) for q in p] for p in (a, b, c, d))
+        u, v = (gb[0] - ga[0], gb[1] - ga[1]), (gd[0] - gc[0], gd[1] - gc[1])
         lu, lv = math.hypot(*u), math.hypot(*v)
-        if abs(u[0] * v[1] - u[1] * v[0]) > TOL * max(lu, lv) or u[0] * v[0] + u[1] * v[1] <= 0:
+        if abs(u[0] * v[1] - u[1] * v[0]) <= TOL / GRID * max(lu, lv) and u[0] * v[0] + u[1] * v[1] > 0:
+            through[n] = (i, j)
+    # Chains of segments joined at such points become one segment from end to end (a closed chain stays).
+    seen, out = set(), []
+    for start in range(len(segs)):
+        if start in seen:
             continue
-        segs[i] = (pen, a, d)
-        alive.discard(j)
-        at[n] = set()
-        far = at[node(pen, d)]
-        far.discard(j)
-        far.add(i)
-    return [segs[i] for i in sorted(alive)]
+        pen = segs[start][0]
+        chain, chain_ends, closed = [start], [], False
+        seen.add(start)
+        for end in (segs[start][1], segs[start][2]):
+            k, p = start, end
+            while node(pen, p) in through:
+                i, j = through[node(pen, p)]
+                k2 = j if i == k else i
+                if k2 == start or k2 in seen:
+                    closed = True
+                    break
+                seen.add(k2)
+                chain.append(k2)
+                _, a, b = segs[k2]
+                p = b if node(pen, a) == node(pen, p) else a
+                k = k2
+            chain_ends.append(p)
+        if closed or node(pen, chain_ends[0]) == node(pen, chain_ends[1]):
+            out += [segs[k] for k in chain]
+        else:
+            out.append((pen, chain_ends[0], chain_ends[1]))
+    return out
 
 
 def split_at_nodes(segs):
@@ -216,12 +236,17 @@ def split_at_nodes(segs):
         cuts = {}
         x0, x1 = sorted((a[0], b[0]))
         y0, y1 = sorted((a[1], b[1]))
+        ga, gb = [round(q / GRID) for q in a], [round(q / GRID) for q in b]
+        glen = math.hypot(gb[0] - ga[0], gb[1] - ga[1])
         for i in range(math.floor((x0 - TOL) / cell), math.floor((x1 + TOL) / cell) + 1):
             for j in range(math.floor((y0 - TOL) / cell), math.floor((y1 + TOL) / cell) + 1):
                 for p in nodes.get((pen, i, j), ()):
                     t = (p[0] - a[0]) * u[0] + (p[1] - a[1]) * u[1]
-                    off = abs((p[0] - a[0]) * u[1] - (p[1] - a[1]) * u[0])
-                    if TOL < t < length - TOL and off <= TOL:
+                    # Off the line, decided on the grid's whole numbers (the same answer for both files).
+                    gp = [round(q / GRID) for q in p]
+                    cross = (gp[0] - ga[0]) * (gb[1] - ga[1]) - (gp[1] - ga[1]) * (gb[0] - ga[0])
+                    off = abs(cross) / glen * GRID if glen > 0 else math.inf
+                    if TOL < t < length - TOL and off <= TOL + 1e-12:
                         cuts.setdefault(round(t / GRID), p)  # the node itself: it lies on both files' grid
         points = [a] + [cuts[k] for k in sorted(cuts)] + [b]
         out += [(pen, points[i - 1], points[i]) for i in range(1, len(points))]

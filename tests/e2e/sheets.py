@@ -150,6 +150,42 @@ if not outside or not all(p[0] > 80 and p[1] < 65 for p in outside):
 if len(pen3) < 10:
     fail("the angle dimension has too few strokes for an arc, two arrowheads and '90°'")
 
+# ---- standard views ----
+# `views of PART`: third angle puts the top view above the front and the right side to its right, first
+# angle the top view below and the left side to the right; one ISO scale; each column's targets share x,
+# each row's y; the front view's drawing is the box's 4 × 1 face at that scale about its target.
+for projection, side, top_above in (("third", "right", True), ("first", "left", False)):
+    body = ('draw box(min: (0, 0, 0), max: (4, 2, 1))\npaper A4 landscape\n'
+            f'views of box(min: (0, 0, 0), max: (4, 2, 1)) projection: "{projection}"\n'
+            'dimension from (0, 0, 0) to (4, 0, 0) in front offset: -10 pen: 2\n')
+    out, err = run("standard-" + projection, body)
+    if "warning" in err:
+        fail(f"{projection} angle: {err}")
+    frame = json.load(open(out))["frames"][0]
+    views = {v["name"]: v for v in frame["views"]}
+    if sorted(views) != sorted(["front", "top", side, "iso"]):
+        fail(f"{projection} angle: views {sorted(views)}")
+    scales = {v["mm_per_world_unit"] for v in views.values()}
+    if len(scales) != 1:
+        fail(f"{projection} angle: scales {scales}")
+    scale = scales.pop()
+    if scale not in (1, 2, 5, 10, 20, 50, 0.5, 0.2, 0.1):
+        fail(f"{projection} angle: scale {scale} is no ISO scale")
+    at = {name: v["layout"]["origin_mm"] for name, v in views.items()}
+    if abs(at["front"][0] - at["top"][0]) > EPS or abs(at["front"][1] - at[side][1]) > EPS:
+        fail(f"{projection} angle: front {at['front']}, top {at['top']}, {side} {at[side]} do not line up")
+    if (at["top"][1] < at["front"][1]) != top_above or at[side][0] <= at["front"][0]:
+        fail(f"{projection} angle: top at {at['top']}, {side} at {at[side]}, front at {at['front']}")
+    index = [v["name"] for v in frame["views"]].index("front")
+    front_pieces = [s for s in frame["segments"] if s["view"] == index and not s["hidden"]]
+    if not front_pieces:
+        fail(f"{projection} angle: nothing drawn in the front view")
+    pen2 = [p for st, pen in zip(frame["strokes"], frame["stroke_pens"]) if pen == 2 for p in st]
+    grid = 0.0125  # planned strokes are snapped to the page's 0.025 mm grid
+    if not any(abs(p[0] - (at["front"][0] - 2 * scale)) <= grid for p in pen2) or \
+            not any(abs(p[0] - (at["front"][0] + 2 * scale)) <= grid for p in pen2):
+        fail(f"{projection} angle: the front view's dimension does not span the box's 4 units at {scale} mm each")
+
 # ---- a section ----
 # A 4 × 2 × 1 box cut by the plane y = 1, the half towards −y removed: the cut face is the rectangle x 0 … 4,
 # z 0 … 1 at y = 1, and it alone is hatched, 0.25 apart at 45°: every hatch piece lies in it, and their

@@ -118,6 +118,79 @@ PageLayout view_layout(const Paper& paper, Point2 at_mm, double mm_per_unit) {  
   return layout;
 }
 
+namespace {
+
+// The grid's columns (x) or rows (y): each one's extent in world units, the union of its views'.
+struct GridBands {
+  std::vector<double> lo, hi, band;  // per column or row; lo > hi: nothing drawn in it
+  double world() const {
+    double sum = 0;
+    for (std::size_t i = 0; i < lo.size(); ++i) sum += std::max(0.0, hi[i] - lo[i]);
+    return sum;
+  }
+  double bands() const {
+    double sum = 0;
+    for (const double b : band) sum += b;
+    return sum;
+  }
+};
+
+GridBands grid_bands(const std::vector<GridViewFit>& views, bool columns) {
+  GridBands out;
+  for (const GridViewFit& v : views) {
+    const auto i = static_cast<std::size_t>(columns ? v.column : v.row);
+    if (i >= out.lo.size()) {
+      out.lo.resize(i + 1, 1e300);
+      out.hi.resize(i + 1, -1e300);
+      out.band.resize(i + 1, 0);
+    }
+    if (!v.extent.empty()) {
+      out.lo[i] = std::min(out.lo[i], columns ? v.extent.xmin : v.extent.ymin);
+      out.hi[i] = std::max(out.hi[i], columns ? v.extent.xmax : v.extent.ymax);
+    }
+    if (!columns) out.band[i] = std::max(out.band[i], v.label_band_mm);
+  }
+  return out;
+}
+
+}  // namespace
+
+std::vector<Point2> grid_view_points(const std::vector<GridViewFit>& views, double s, const Rect2& area,
+                                     double gap_mm) {
+  const GridBands columns = grid_bands(views, true), rows = grid_bands(views, false);
+  const auto size = [&](const GridBands& b, std::size_t i) { return std::max(0.0, s * (b.hi[i] - b.lo[i])); };
+  const double width = s * columns.world() + gap_mm * static_cast<double>(columns.lo.size() - 1);
+  const double height = s * rows.world() + rows.bands() + gap_mm * static_cast<double>(rows.lo.size() - 1);
+  // Each column's left edge and each row's top edge, the grid centred in the area.
+  std::vector<double> left(columns.lo.size()), top(rows.lo.size());
+  double x = area.xmin + 0.5 * (area.width() - width);
+  for (std::size_t c = 0; c < left.size(); ++c) left[c] = x, x += size(columns, c) + gap_mm;
+  double y = area.ymin + 0.5 * (area.height() - height);
+  for (std::size_t r = 0; r < top.size(); ++r) top[r] = y, y += size(rows, r) + rows.band[r] + gap_mm;
+  std::vector<Point2> out;
+  for (const GridViewFit& v : views) {
+    const auto c = static_cast<std::size_t>(v.column), r = static_cast<std::size_t>(v.row);
+    // Picture x grows to the right on the page, picture y upwards (page y down).
+    const double cx = columns.lo[c] <= columns.hi[c] ? left[c] - s * columns.lo[c] : left[c];
+    const double cy = rows.lo[r] <= rows.hi[r] ? top[r] + s * rows.hi[r] : top[r];
+    out.push_back({cx, cy});
+  }
+  return out;
+}
+
+double fitted_grid_scale(const std::vector<GridViewFit>& views, const Rect2& area, double gap_mm) {
+  const GridBands columns = grid_bands(views, true), rows = grid_bands(views, false);
+  const double wide = columns.world(), tall = rows.world();
+  double best = 1e300;
+  if (wide > 0)
+    best = std::min(best, (area.width() - gap_mm * static_cast<double>(columns.lo.size() - 1)) / wide);
+  if (tall > 0)
+    best = std::min(best,
+                    (area.height() - rows.bands() - gap_mm * static_cast<double>(rows.lo.size() - 1)) / tall);
+  if (!(best > 0) || best >= 1e300) return 1;
+  return iso_scale_at_most(best);
+}
+
 SheetFrame sheet_frame(const PageSpec& spec) {
   const double m = spec.margin_mm, w = spec.paper.width_mm, h = spec.paper.height_mm;
   SheetFrame out;

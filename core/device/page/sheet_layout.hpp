@@ -53,6 +53,22 @@ inline constexpr double kViewGapMm = 5;
 double fitted_sheet_scale(const std::vector<SheetViewFit>& views, const PageSpec& spec,
                           const Rect2& keep_out = Rect2::none());
 
+// Views in a grid (`views of PART`: the standard views in first- or third-angle projection): a column and
+// a row each, columns as wide as their views, rows as tall as their views and labels, `gap_mm` apart, the
+// grid centred in an area of the sheet. Each column's views share their targets' x on the page and each
+// row's their y, so a front view and the top view above it line up as projections do.
+struct GridViewFit {
+  int column = 0, row = 0;
+  Rect2 extent;  // world units about the target (SheetViewFit::extent)
+  double label_band_mm = 0;
+};
+// Where each view's target lands at `mm_per_unit`.
+std::vector<Point2> grid_view_points(const std::vector<GridViewFit>& views, double mm_per_unit,
+                                     const Rect2& area, double gap_mm);
+// The largest ISO scale at which the grid fits inside `area`; 1 when nothing has an extent or no positive
+// scale fits (the caller's warnings then say what runs off).
+double fitted_grid_scale(const std::vector<GridViewFit>& views, const Rect2& area, double gap_mm);
+
 // The layout of a view: picture (0, 0) at `at_mm`, `mm_per_picture_unit` millimetres per picture unit.
 PageLayout view_layout(const Paper& paper, Point2 at_mm, double mm_per_picture_unit);
 

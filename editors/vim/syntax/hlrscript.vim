@@ -80,7 +80,7 @@ syn cluster hlrExpr contains=hlrComment,hlrString,hlrNumber,hlrOperator,hlrDelim
 
 " Followed on its line by an operand (a number, a name, a string, '(' or '['): no expression puts
 " two operands side by side, so there the word is the statement or clause keyword, not a name.
-syn match hlrClause /\<\%(pen\|plotter\|label\|view\|dimension\|from\|to\|fps\)\>\ze[ \t]\+[A-Za-z0-9_"(\[]/
+syn match hlrClause /\<\%(pen\|plotter\|label\|views\|view\|dimension\|from\|to\|of\|fps\)\>\ze[ \t]\+[A-Za-z0-9_"(\[]/
 " dimension angle at V: angle only between dimension and at.
 syn match hlrClause /\%(\<dimension\s\+\)\@<=angle\ze\s\+at\>/
 " The lone orientation after `output "x.pdf"` (after `paper SIZE` too): never a useful name.

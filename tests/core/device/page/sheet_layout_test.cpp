@@ -108,5 +108,47 @@ TEST(SheetLayout, TheTitleBlockSitsInTheFramesBottomRightCorner) {
   EXPECT_TRUE(sheet_frame(PageSpec{{80, 60}, 5}).title_block.empty());
 }
 
+// Third-angle views of a 60 × 40 × 20 part about its centre: front 60 × 20 (column 0, row 1), top 60 × 40
+// (column 0, row 0), right 40 × 20 (column 1, row 1), iso 70 × 50 (column 1, row 0); labels 10 mm, gap 20.
+std::vector<GridViewFit> third_angle() {
+  return {{0, 1, {-30, -10, 30, 10}, 10},
+          {0, 0, {-30, -20, 30, 20}, 10},
+          {1, 1, {-20, -10, 20, 10}, 10},
+          {1, 0, {-35, -25, 35, 25}, 10}};
+}
+
+TEST(SheetLayout, GridViewsLineUpByColumnAndRowAndCentreTheGrid) {
+  const Rect2 area{0, 0, 300, 200};
+  // At 1 mm per unit: columns 60 and 70 wide, rows 50 + 10 and 20 + 10 tall, 20 apart: the grid is 150 × 110,
+  // its top-left corner at (75, 45). Column 0's targets at x 75 + 30, column 1's at 75 + 60 + 20 + 35; row
+  // 0's at y 45 + 25 (its tallest view, the iso, reaches 25 above the target), row 1's at 45 + 60 + 20 + 10.
+  const std::vector<Point2> at = grid_view_points(third_angle(), 1, area, 20);
+  ASSERT_EQ(at.size(), 4U);
+  EXPECT_DOUBLE_EQ(at[0].x, 105);
+  EXPECT_DOUBLE_EQ(at[1].x, 105);
+  EXPECT_DOUBLE_EQ(at[2].x, 190);
+  EXPECT_DOUBLE_EQ(at[3].x, 190);
+  EXPECT_DOUBLE_EQ(at[1].y, 70);
+  EXPECT_DOUBLE_EQ(at[3].y, 70);
+  EXPECT_DOUBLE_EQ(at[0].y, 135);
+  EXPECT_DOUBLE_EQ(at[2].y, 135);
+  // At 2 mm per unit the grid is 280 × 180: (10, 10) to (290, 190).
+  const std::vector<Point2> at2 = grid_view_points(third_angle(), 2, area, 20);
+  EXPECT_DOUBLE_EQ(at2[0].x - 2 * 30, 10);
+  EXPECT_DOUBLE_EQ(at2[3].x + 2 * 35, 290);
+  EXPECT_DOUBLE_EQ(at2[1].y - 2 * 25, 10);
+  EXPECT_DOUBLE_EQ(at2[0].y + 2 * 10 + 10, 190);
+}
+
+TEST(SheetLayout, TheGridScaleIsTheLargestIsoScaleThatFits) {
+  // 130 units wide with one 20 mm gap, 70 units tall with one gap and two 10 mm labels.
+  EXPECT_DOUBLE_EQ(fitted_grid_scale(third_angle(), {0, 0, 300, 200}, 20), 2);    // 280/130, 160/70: 2.15
+  EXPECT_DOUBLE_EQ(fitted_grid_scale(third_angle(), {0, 0, 280, 180}, 20), 2);    // exactly 2 by 2
+  EXPECT_DOUBLE_EQ(fitted_grid_scale(third_angle(), {0, 0, 279, 180}, 20), 1);    // a hair too narrow
+  EXPECT_DOUBLE_EQ(fitted_grid_scale(third_angle(), {0, 0, 1000, 200}, 20), 2);   // the height decides
+  EXPECT_DOUBLE_EQ(fitted_grid_scale({}, {0, 0, 100, 100}, 20), 1);              // nothing to fit
+  EXPECT_DOUBLE_EQ(fitted_grid_scale(third_angle(), {0, 0, 10, 10}, 20), 1);     // nothing positive fits
+}
+
 }  // namespace
 }  // namespace hlr
