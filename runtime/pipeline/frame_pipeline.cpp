@@ -117,7 +117,11 @@ void run_frame(const Program& program, int frame, double fps, const PipelineOpti
   settings.plot.texts = page_labels(scene.labels);
 
   const Camera& camera = settings.camera_on_page;
+  // A mesh file holds the solids themselves (DeviceFrame::scene): no hidden lines to find for it.
+  const DeviceKind kind = settings.target.device;
+  const bool solids_only = kind == DeviceKind::Off || kind == DeviceKind::Obj || kind == DeviceKind::Stl;
   const auto render = [&](const Scene& drawn, FrameResult& result) {
+    if (solids_only) return;
     try {
       result = render_frame(drawn, camera, hlr);
     } catch (const FrameTimedOut&) {
@@ -141,6 +145,7 @@ void run_frame(const Program& program, int frame, double fps, const PipelineOpti
     sheet = render_sheet(scene, settings.plot.spec, options.run.device.decorations, settings.hidden, hlr,
                          [&](const Scene& drawn, const Camera& view_camera, const HlrOptions& options) {
                            FrameResult view;
+                           if (solids_only) return view;
                            try {
                              view = render_frame(drawn, view_camera, options);
                            } catch (const FrameTimedOut&) {
