@@ -142,17 +142,19 @@ void run_frame(const Program& program, int frame, double fps, const PipelineOpti
       if (!label.on_page)
         fail(label.span, "on a sheet of views, a label goes at a page point",
              "write 'label ... at page (X, Y)' in millimetres from the page's top-left corner");
-    sheet = render_sheet(scene, settings.plot.spec, options.run.device.decorations, settings.hidden, hlr,
-                         [&](const Scene& drawn, const Camera& view_camera, const HlrOptions& options) {
-                           FrameResult view;
-                           if (solids_only) return view;
-                           try {
-                             view = render_frame(drawn, view_camera, options);
-                           } catch (const FrameTimedOut&) {
-                             out_of_time("the hidden lines");
-                           }
-                           return view;
-                         });
+    sheet = render_sheet(
+        scene, settings.plot.spec, options.run.device.decorations, settings.hidden, hlr,
+        [&](const Scene& drawn, const Camera& view_camera, const HlrOptions& options) {
+          FrameResult view;
+          if (solids_only) return view;
+          try {
+            view = render_frame(drawn, view_camera, options);
+          } catch (const FrameTimedOut&) {
+            out_of_time("the hidden lines");
+          }
+          return view;
+        },
+        settings.plot.dimensions);
     result.segments = std::move(sheet->segments);
     result.stats = sheet->stats;
     settings.plot.object_pens.resize(scene.scene.objects.size(), 1);

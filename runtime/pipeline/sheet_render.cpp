@@ -12,6 +12,28 @@ namespace hlr::runtime {
 
 namespace {
 
+// How far the dimensions drawn in view `v` reach past its drawing (at `scale`, laid out by `layout`).
+ViewMargins dimension_margins(const std::vector<PageDimension>& dimensions, std::size_t v,
+                              const Camera& camera, const SheetViewFit& fit, double scale,
+                              const PageLayout& layout) {
+  ViewMargins out;
+  if (fit.extent.empty()) return out;
+  // The drawing's box on the page: picture y grows upwards, page y downwards.
+  const Rect2 drawing{fit.at_mm.x + scale * fit.extent.xmin, fit.at_mm.y - scale * fit.extent.ymax,
+                      fit.at_mm.x + scale * fit.extent.xmax, fit.at_mm.y - scale * fit.extent.ymin};
+  for (const PageDimension& d : dimensions) {
+    if (d.view != v) continue;
+    for (const std::vector<Point2>& stroke : dimension_strokes(d, camera, layout).strokes)
+      for (const Point2& p : stroke) {
+        out.left = std::max(out.left, drawing.xmin - p.x);
+        out.right = std::max(out.right, p.x - drawing.xmax);
+        out.top = std::max(out.top, drawing.ymin - p.y);
+        out.bottom = std::max(out.bottom, p.y - drawing.ymax);
+      }
+  }
+  return out;
+}
+
 // The views of `views of PART`: placed in their grid at one scale — theirs, else the paper's, else the
 // largest ISO scale at which the grid fits the sheet above the title block — which they then keep.
 void place_grid_views(const FrameScene& scene, const PageSpec& spec, bool framed,
@@ -21,7 +43,7 @@ void place_grid_views(const FrameScene& scene, const PageSpec& spec, bool framed
   for (std::size_t i = 0; i < scene.views.size(); ++i)
     if (const std::optional<ViewGridCell>& cell = scene.views[i].grid) {
       placed.push_back(i);
-      grid.push_back({cell->column, cell->row, fits[i].extent, fits[i].label_band_mm});
+      grid.push_back({cell->column, cell->row, fits[i].extent, fits[i].label_band_mm, fits[i].dimensions});
     }
   if (placed.empty()) return;
   const ViewSetting& first = scene.views[placed.front()];
@@ -44,7 +66,8 @@ void place_grid_views(const FrameScene& scene, const PageSpec& spec, bool framed
 }  // namespace
 
 SheetDrawing render_sheet(const FrameScene& scene, const PageSpec& spec, bool framed, HiddenStyle hidden,
-                          const HlrOptions& hlr, const ViewRenderer& render) {
+                          const HlrOptions& hlr, const ViewRenderer& render,
+                          const std::vector<PageDimension>& dimensions) {
   SheetDrawing out;
   out.hidden = hidden;
   std::vector<SheetViewFit> fits;
@@ -126,9 +149,30 @@ SheetDrawing render_sheet(const FrameScene& scene, const PageSpec& spec, bool fr
     fit.label_band_mm = v.label.empty() ? 0 : kViewLabelBandMm;
     fits.push_back(fit);
   }
-  place_grid_views(scene, spec, framed, fits);
-  const double sheet_scale =
-      fitted_sheet_scale(fits, spec, framed ? sheet_frame(spec).title_block : Rect2::none());
+  // The layout, fitted with the room the dimensions take: that room is measured on a layout, so fit, measure
+  // and fit again while it grows (a dimension between points inside the drawing reaches further out as the
+  // drawing shrinks); a few rounds settle it on the ISO ladder.
+  const Rect2 keep_out = framed ? sheet_frame(spec).title_block : Rect2::none();
+  double sheet_scale = 1;
+  for (int round = 0; round < 4; ++round) {
+    place_grid_views(scene, spec, framed, fits);
+    sheet_scale = fitted_sheet_scale(fits, spec, keep_out);
+    if (dimensions.empty()) break;
+    bool grew = false;
+    for (std::size_t i = 0; i < fits.size(); ++i) {
+      const double scale = fits[i].mm_per_unit.value_or(sheet_scale);
+      const ViewMargins room =
+          dimension_margins(dimensions, i, out.views[i].camera, fits[i], scale,
+                            view_layout(spec.paper, fits[i].at_mm, scale * per_picture[i]));
+      ViewMargins& kept = fits[i].dimensions;
+      constexpr double settled = Tolerance::kSheetMarginSlackMm;
+      grew |= room.left > kept.left + settled || room.top > kept.top + settled ||
+              room.right > kept.right + settled || room.bottom > kept.bottom + settled;
+      kept = {std::max(kept.left, room.left), std::max(kept.top, room.top), std::max(kept.right, room.right),
+              std::max(kept.bottom, room.bottom)};
+    }
+    if (!grew) break;
+  }
   // The title block's scale: the sheet's when a view is drawn at it, else the views' own when they share
   // one, else "AS SHOWN"; a view at another scale says so under it, as drawings do: "DETAIL (2:1)".
   std::optional<double> title_scale;

@@ -30,11 +30,12 @@ struct SheetDrawing {
 };
 
 // Renders every view of `scene` through `render` (the pipeline's render_frame with its timeout handling)
-// and lays them out on the page of `spec` (clear of the title block when `framed`). `hidden` is the
-// sheet's style.
+// and lays them out on the page of `spec` (clear of the title block when `framed`), with room for
+// `dimensions` (sheet_dimensions) beside the views they are drawn in. `hidden` is the sheet's style.
 using ViewRenderer = std::function<FrameResult(const Scene&, const Camera&, const HlrOptions&)>;
 SheetDrawing render_sheet(const FrameScene& scene, const PageSpec& spec, bool framed, HiddenStyle hidden,
-                          const HlrOptions& hlr, const ViewRenderer& render);
+                          const HlrOptions& hlr, const ViewRenderer& render,
+                          const std::vector<PageDimension>& dimensions = {});
 
 // The frame's dimensions, each with the index of its view: the one named after `in`, else the sheet's only
 // view. Throws EvalError at the name for a view the sheet does not have, and at the statement when there

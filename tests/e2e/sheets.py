@@ -186,6 +186,25 @@ for projection, side, top_above in (("third", "right", True), ("first", "left", 
             not any(abs(p[0] - (at["front"][0] + 2 * scale)) <= grid for p in pen2):
         fail(f"{projection} angle: the front view's dimension does not span the box's 4 units at {scale} mm each")
 
+# ---- the fit keeps room for dimensions ----
+# One view of a 4 × 2 × 1 box fitted to an A4 sheet; a dimension 85 mm below it must still land inside the
+# margins, so the fitted scale drops, and every stroke — dimension and label included — stays inside.
+ALONE = ('draw box(min: (0, 0, 0), max: (4, 2, 1))\npaper A4 landscape\n'
+         'view front = ortho(eye: (2, -10, 0.5), target: (2, 0, 0.5), height: 4) at page (148, 80)\n')
+out, _ = run("fit-plain", ALONE, "--plain")
+plain_scale = json.load(open(out))["frames"][0]["views"][0]["mm_per_world_unit"]
+out, err = run("fit-dimensioned", ALONE + 'dimension from (0, 0, 0) to (4, 0, 0) in front offset: -85\n', "--plain")
+frame = json.load(open(out))["frames"][0]
+scale = frame["views"][0]["mm_per_world_unit"]
+if not scale < plain_scale:
+    fail(f"a dimension 85 mm below the view left the fitted scale at {scale} (without it {plain_scale})")
+if "warning" in err:
+    fail(f"the fitted sheet still warns: {err}")
+for st in frame["strokes"]:
+    for x, y in st:
+        if not (12 - EPS <= x <= 297 - 12 + EPS and 12 - EPS <= y <= 210 - 12 + EPS):
+            fail(f"stroke point ({x}, {y}) lies outside the margins at the fitted scale {scale}")
+
 # ---- a section ----
 # A 4 × 2 × 1 box cut by the plane y = 1, the half towards −y removed: the cut face is the rectangle x 0 … 4,
 # z 0 … 1 at y = 1, and it alone is hatched, 0.25 apart at 45°: every hatch piece lies in it, and their

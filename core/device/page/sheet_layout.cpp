@@ -71,16 +71,20 @@ double fitted_sheet_scale(const std::vector<SheetViewFit>& views, const PageSpec
     if (v.mm_per_unit || v.extent.empty()) continue;
     const Point2 p = v.at_mm;
     if (!(p.x > inside.xmin && p.x < inside.xmax && p.y > inside.ymin && p.y < inside.ymax)) continue;
-    // Inside the margins (page y grows downwards; the label sits below the drawing).
-    limit(bound(inside.xmax - p.x, v.extent.xmax));
-    limit(bound(p.x - inside.xmin, -v.extent.xmin));
-    limit(bound(p.y - inside.ymin, v.extent.ymax));
-    limit(bound(inside.ymax - p.y - v.label_band_mm, -v.extent.ymin));
+    // Inside the margins (page y grows downwards; the label sits below the drawing and its dimensions).
+    const ViewMargins& d = v.dimensions;
+    limit(bound(inside.xmax - p.x - d.right, v.extent.xmax));
+    limit(bound(p.x - inside.xmin - d.left, -v.extent.xmin));
+    limit(bound(p.y - inside.ymin - d.top, v.extent.ymax));
+    limit(bound(inside.ymax - p.y - v.label_band_mm - d.bottom, -v.extent.ymin));
     // Clear of the title block: to its left or above it.
     if (!keep_out.empty() && !keep_out.contains(p)) {
-      const double left = p.x < keep_out.xmin ? bound(keep_out.xmin - kViewGapMm - p.x, v.extent.xmax) : 0;
+      const double left =
+          p.x < keep_out.xmin ? bound(keep_out.xmin - kViewGapMm - d.right - p.x, v.extent.xmax) : 0;
       const double above =
-          p.y < keep_out.ymin ? bound(keep_out.ymin - kViewGapMm - v.label_band_mm - p.y, -v.extent.ymin) : 0;
+          p.y < keep_out.ymin
+              ? bound(keep_out.ymin - kViewGapMm - v.label_band_mm - d.bottom - p.y, -v.extent.ymin)
+              : 0;
       limit(std::max(left, above));
     }
     // Clear of every other view: apart along x or along y, whichever allows more.
@@ -98,6 +102,8 @@ double fitted_sheet_scale(const std::vector<SheetViewFit>& views, const PageSpec
       add_reach(x, east, -east.extent.xmin);
       add_reach(y, north, -north.extent.ymin);
       add_reach(y, south, south.extent.ymax);
+      x.fixed += west.dimensions.right + east.dimensions.left;
+      y.fixed += north.dimensions.bottom + south.dimensions.top;
       const double sx = bound(std::abs(dx) - kViewGapMm - x.fixed, x.per_scale);
       const double sy = bound(std::abs(dy) - kViewGapMm - north.label_band_mm - y.fixed, y.per_scale);
       limit(std::max(dx == 0 ? 0 : sx, dy == 0 ? 0 : sy));
@@ -122,15 +128,16 @@ namespace {
 
 // The grid's columns (x) or rows (y): each one's extent in world units, the union of its views'.
 struct GridBands {
-  std::vector<double> lo, hi, band;  // per column or row; lo > hi: nothing drawn in it
+  std::vector<double> lo, hi, band;   // per column or row; lo > hi: nothing drawn in it
+  std::vector<double> before, after;  // dimensions' room: left and right of a column, above and below a row
   double world() const {
     double sum = 0;
     for (std::size_t i = 0; i < lo.size(); ++i) sum += std::max(0.0, hi[i] - lo[i]);
     return sum;
   }
-  double bands() const {
+  double bands() const {  // labels and dimensions: millimetres whatever the scale
     double sum = 0;
-    for (const double b : band) sum += b;
+    for (std::size_t i = 0; i < band.size(); ++i) sum += band[i] + before[i] + after[i];
     return sum;
   }
 };
@@ -143,12 +150,16 @@ GridBands grid_bands(const std::vector<GridViewFit>& views, bool columns) {
       out.lo.resize(i + 1, 1e300);
       out.hi.resize(i + 1, -1e300);
       out.band.resize(i + 1, 0);
+      out.before.resize(i + 1, 0);
+      out.after.resize(i + 1, 0);
     }
     if (!v.extent.empty()) {
       out.lo[i] = std::min(out.lo[i], columns ? v.extent.xmin : v.extent.ymin);
       out.hi[i] = std::max(out.hi[i], columns ? v.extent.xmax : v.extent.ymax);
     }
     if (!columns) out.band[i] = std::max(out.band[i], v.label_band_mm);
+    out.before[i] = std::max(out.before[i], columns ? v.dimensions.left : v.dimensions.top);
+    out.after[i] = std::max(out.after[i], columns ? v.dimensions.right : v.dimensions.bottom);
   }
   return out;
 }
@@ -159,14 +170,17 @@ std::vector<Point2> grid_view_points(const std::vector<GridViewFit>& views, doub
                                      double gap_mm) {
   const GridBands columns = grid_bands(views, true), rows = grid_bands(views, false);
   const auto size = [&](const GridBands& b, std::size_t i) { return std::max(0.0, s * (b.hi[i] - b.lo[i])); };
-  const double width = s * columns.world() + gap_mm * static_cast<double>(columns.lo.size() - 1);
+  const double width =
+      s * columns.world() + columns.bands() + gap_mm * static_cast<double>(columns.lo.size() - 1);
   const double height = s * rows.world() + rows.bands() + gap_mm * static_cast<double>(rows.lo.size() - 1);
   // Each column's left edge and each row's top edge, the grid centred in the area.
   std::vector<double> left(columns.lo.size()), top(rows.lo.size());
   double x = area.xmin + 0.5 * (area.width() - width);
-  for (std::size_t c = 0; c < left.size(); ++c) left[c] = x, x += size(columns, c) + gap_mm;
+  for (std::size_t c = 0; c < left.size(); ++c)
+    left[c] = x + columns.before[c], x += columns.before[c] + size(columns, c) + columns.after[c] + gap_mm;
   double y = area.ymin + 0.5 * (area.height() - height);
-  for (std::size_t r = 0; r < top.size(); ++r) top[r] = y, y += size(rows, r) + rows.band[r] + gap_mm;
+  for (std::size_t r = 0; r < top.size(); ++r)
+    top[r] = y + rows.before[r], y += rows.before[r] + size(rows, r) + rows.after[r] + rows.band[r] + gap_mm;
   std::vector<Point2> out;
   for (const GridViewFit& v : views) {
     const auto c = static_cast<std::size_t>(v.column), r = static_cast<std::size_t>(v.row);
@@ -183,7 +197,8 @@ double fitted_grid_scale(const std::vector<GridViewFit>& views, const Rect2& are
   const double wide = columns.world(), tall = rows.world();
   double best = 1e300;
   if (wide > 0)
-    best = std::min(best, (area.width() - gap_mm * static_cast<double>(columns.lo.size() - 1)) / wide);
+    best = std::min(
+        best, (area.width() - columns.bands() - gap_mm * static_cast<double>(columns.lo.size() - 1)) / wide);
   if (tall > 0)
     best = std::min(best,
                     (area.height() - rows.bands() - gap_mm * static_cast<double>(rows.lo.size() - 1)) / tall);

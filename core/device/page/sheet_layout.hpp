@@ -2,7 +2,7 @@
 // side views and an isometric one. Each view puts its picture origin (the camera's target) at a page point
 // in millimetres and has its own scale; views without one share the sheet's scale — the paper's `scale:`,
 // else the largest ISO 5455 scale (1, 2 or 5 × 10^k mm per unit) at which every such view, with its label
-// under it, stays inside the page's margins. A scale is millimetres per world unit: exact everywhere in
+// under it and its dimensions' room about it, stays inside the page's margins. A scale is millimetres per world unit: exact everywhere in
 // an orthographic view, at the target's depth in a perspective one (world_per_picture_unit). Scales are
 // written as ratios reading one unit as a millimetre ("1:2", "5:1").
 #pragma once
@@ -18,12 +18,19 @@
 
 namespace hlr {
 
+// How far a view's dimensions reach past its drawing on the page, mm on each side (page y down: `top` is
+// above the drawing). The fits keep that room too, and the label goes below the bottom one.
+struct ViewMargins {
+  double left = 0, top = 0, right = 0, bottom = 0;
+};
+
 // What the scale fit needs of one view.
 struct SheetViewFit {
   Point2 at_mm;                       // where the picture origin lands (page mm, top-left, y down)
   std::optional<double> mm_per_unit;  // its own scale; views with one are not fitted
   Rect2 extent;  // its extent in world units about the target (the camera's frame, else what it draws)
   double label_band_mm = 0;  // room its label needs below the drawing
+  ViewMargins dimensions;    // room its dimensions take beyond the drawing
 };
 
 // Height of a view's label, and the gap between the drawing and it (the label's band: gap, capitals and
@@ -61,6 +68,7 @@ struct GridViewFit {
   int column = 0, row = 0;
   Rect2 extent;  // world units about the target (SheetViewFit::extent)
   double label_band_mm = 0;
+  ViewMargins dimensions;
 };
 // Where each view's target lands at `mm_per_unit`.
 std::vector<Point2> grid_view_points(const std::vector<GridViewFit>& views, double mm_per_unit,

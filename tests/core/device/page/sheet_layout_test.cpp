@@ -33,7 +33,7 @@ TEST(SheetLayout, TheFittedScaleIsTheLargestIsoScaleAtWhichEveryViewStaysInside)
   //   right  (287 − 100) / 30 = 6.23   left (100 − 10) / 10 = 9
   //   up     (60 − 10) / 5 = 10        down (200 − 60 − 8) / 20 = 6.6
   // Largest ISO scale ≤ 6.23: 5.
-  const SheetViewFit a{{100, 60}, std::nullopt, Rect2{-10, -20, 30, 5}, 8};
+  const SheetViewFit a{{100, 60}, std::nullopt, Rect2{-10, -20, 30, 5}, 8, {}};
   EXPECT_DOUBLE_EQ(fitted_sheet_scale({a}, spec), 5);
   // The paper's scale wins.
   PageSpec scaled = spec;
@@ -42,15 +42,15 @@ TEST(SheetLayout, TheFittedScaleIsTheLargestIsoScaleAtWhichEveryViewStaysInside)
   // Nothing to fit: 1.
   EXPECT_DOUBLE_EQ(fitted_sheet_scale({}, spec), 1);
   // A point outside the margins constrains nothing.
-  EXPECT_DOUBLE_EQ(fitted_sheet_scale({{{5, 60}, std::nullopt, Rect2{-1, -1, 1, 1}, 0}}, spec), 1);
+  EXPECT_DOUBLE_EQ(fitted_sheet_scale({{{5, 60}, std::nullopt, Rect2{-1, -1, 1, 1}, 0, {}}}, spec), 1);
 }
 
 TEST(SheetLayout, FittedViewsKeepClearOfOneAnotherAndOfTheTitleBlock) {
   const PageSpec spec{{297, 210}, 10};
   // Two views 100 mm apart along x, each reaching 10 units towards the other: side by side with the 5 mm
   // gap, 20·s + 5 ≤ 100, s ≤ 4.75 (apart along y they cannot be: they share a row). ISO: 2.
-  const SheetViewFit a{{100, 100}, std::nullopt, Rect2{-10, -5, 10, 5}, 0};
-  const SheetViewFit b{{200, 100}, std::nullopt, Rect2{-10, -5, 10, 5}, 0};
+  const SheetViewFit a{{100, 100}, std::nullopt, Rect2{-10, -5, 10, 5}, 0, {}};
+  const SheetViewFit b{{200, 100}, std::nullopt, Rect2{-10, -5, 10, 5}, 0, {}};
   EXPECT_DOUBLE_EQ(fitted_sheet_scale({a, b}, spec), 2);
   // b at a scale of its own, 3 mm per unit: 10·s + 30 + 5 ≤ 100, s ≤ 6.5; a's margins: (100 − 10)/10 = 9,
   // (100 − 10)/5 = 18. ISO: 5.
@@ -60,14 +60,36 @@ TEST(SheetLayout, FittedViewsKeepClearOfOneAnotherAndOfTheTitleBlock) {
   // Diagonal neighbours may be apart along either axis; the freer one counts. c at (200, 180), 80 mm
   // below on a taller sheet: along y 10·s + 5 ≤ 80 (s ≤ 7.5) beats along x (s ≤ 4.75); a's own margins
   // allow 9, c's (287 − 200)/10 = 8.7. ISO: 5.
-  const SheetViewFit c{{200, 180}, std::nullopt, Rect2{-10, -5, 10, 5}, 0};
+  const SheetViewFit c{{200, 180}, std::nullopt, Rect2{-10, -5, 10, 5}, 0, {}};
   EXPECT_DOUBLE_EQ(fitted_sheet_scale({a, c}, PageSpec{{297, 300}, 10}), 5);
   // The title block at x ≥ 150, y ≥ 150: a view at (100, 100) reaching 10 units right and 5 down stays to
   // its left (10·s + 5 ≤ 50, s ≤ 4.5) or above it (5·s + 5 ≤ 50, s ≤ 9): 9 → its margins' 9 → ISO 5.
   EXPECT_DOUBLE_EQ(fitted_sheet_scale({a}, spec, Rect2{150, 150, 287, 200}), 5);
   // Reaching 20 units right and 10 down: left 45/20 = 2.25, above 45/10 = 4.5 → ISO 2.
-  const SheetViewFit wide{{100, 100}, std::nullopt, Rect2{-5, -10, 20, 5}, 0};
+  const SheetViewFit wide{{100, 100}, std::nullopt, Rect2{-5, -10, 20, 5}, 0, {}};
   EXPECT_DOUBLE_EQ(fitted_sheet_scale({wide}, spec, Rect2{150, 150, 287, 200}), 2);
+}
+
+TEST(SheetLayout, TheFitKeepsRoomForTheDimensions) {
+  const PageSpec spec{{297, 210}, 10};
+  // The view of the first test (ISO 5 without dimensions), its dimensions reaching 40 mm right of the
+  // drawing: (287 − 100 − 40) / 30 = 4.9 → ISO 2. Reaching 40 mm below instead: (200 − 60 − 8 − 40) / 20 =
+  // 4.6 → 2 as well; 10 mm below: (200 − 60 − 8 − 10) / 20 = 6.1, and the right's 6.23: ISO 5.
+  SheetViewFit a{{100, 60}, std::nullopt, Rect2{-10, -20, 30, 5}, 8, {}};
+  a.dimensions.right = 40;
+  EXPECT_DOUBLE_EQ(fitted_sheet_scale({a}, spec), 2);
+  a.dimensions = {0, 0, 0, 40};
+  EXPECT_DOUBLE_EQ(fitted_sheet_scale({a}, spec), 2);
+  a.dimensions = {0, 0, 0, 10};
+  EXPECT_DOUBLE_EQ(fitted_sheet_scale({a}, spec), 5);
+  // Two views side by side 100 mm apart (ISO 2 without dimensions: 20·s + 5 ≤ 100): a's dimensions 30 mm
+  // to its right leave 20·s + 35 ≤ 100, s ≤ 3.25: still 2; 60 mm: s ≤ 1.75 → 1.
+  SheetViewFit b{{100, 100}, std::nullopt, Rect2{-10, -5, 10, 5}, 0, {}};
+  const SheetViewFit c{{200, 100}, std::nullopt, Rect2{-10, -5, 10, 5}, 0, {}};
+  b.dimensions.right = 30;
+  EXPECT_DOUBLE_EQ(fitted_sheet_scale({b, c}, spec), 2);
+  b.dimensions.right = 60;
+  EXPECT_DOUBLE_EQ(fitted_sheet_scale({b, c}, spec), 1);
 }
 
 TEST(SheetLayout, AViewPutsItsPictureOriginAtItsPoint) {
@@ -111,10 +133,10 @@ TEST(SheetLayout, TheTitleBlockSitsInTheFramesBottomRightCorner) {
 // Third-angle views of a 60 × 40 × 20 part about its centre: front 60 × 20 (column 0, row 1), top 60 × 40
 // (column 0, row 0), right 40 × 20 (column 1, row 1), iso 70 × 50 (column 1, row 0); labels 10 mm, gap 20.
 std::vector<GridViewFit> third_angle() {
-  return {{0, 1, {-30, -10, 30, 10}, 10},
-          {0, 0, {-30, -20, 30, 20}, 10},
-          {1, 1, {-20, -10, 20, 10}, 10},
-          {1, 0, {-35, -25, 35, 25}, 10}};
+  return {{0, 1, {-30, -10, 30, 10}, 10, {}},
+          {0, 0, {-30, -20, 30, 20}, 10, {}},
+          {1, 1, {-20, -10, 20, 10}, 10, {}},
+          {1, 0, {-35, -25, 35, 25}, 10, {}}};
 }
 
 TEST(SheetLayout, GridViewsLineUpByColumnAndRowAndCentreTheGrid) {
@@ -148,6 +170,25 @@ TEST(SheetLayout, TheGridScaleIsTheLargestIsoScaleThatFits) {
   EXPECT_DOUBLE_EQ(fitted_grid_scale(third_angle(), {0, 0, 1000, 200}, 20), 2);   // the height decides
   EXPECT_DOUBLE_EQ(fitted_grid_scale({}, {0, 0, 100, 100}, 20), 1);              // nothing to fit
   EXPECT_DOUBLE_EQ(fitted_grid_scale(third_angle(), {0, 0, 10, 10}, 20), 1);     // nothing positive fits
+}
+
+TEST(SheetLayout, GridCellsMakeRoomForTheDimensions) {
+  // The third-angle grid of GridViewsLineUpByColumnAndRowAndCentreTheGrid, the front view's dimensions
+  // reaching 12 mm below it and 15 mm right: row 1 grows by 12, column 0 by 15. At 1 mm per unit the grid
+  // is 165 × 122, its corner at (67.5, 39); column 1's targets move right by 15, row 1's stay under their
+  // row's top (the dimensions are below them).
+  std::vector<GridViewFit> views = third_angle();
+  views[0].dimensions = {0, 0, 15, 12};
+  const std::vector<Point2> at = grid_view_points(views, 1, {0, 0, 300, 200}, 20);
+  EXPECT_DOUBLE_EQ(at[0].x, 67.5 + 30);
+  EXPECT_DOUBLE_EQ(at[2].x, 67.5 + 60 + 15 + 20 + 35);
+  EXPECT_DOUBLE_EQ(at[1].y, 39 + 25);
+  EXPECT_DOUBLE_EQ(at[0].y, 39 + 60 + 20 + 10);
+  // The fit: across (W − 15 − 20)/130, down (H − 10 − 10 − 12 − 20)/70. In 295 × 200: 2 and 2.11 → 2; in
+  // 295 × 190: down 1.97 → 1; in 290 × 200: across 1.96 → 1.
+  EXPECT_DOUBLE_EQ(fitted_grid_scale(views, {0, 0, 295, 200}, 20), 2);
+  EXPECT_DOUBLE_EQ(fitted_grid_scale(views, {0, 0, 295, 190}, 20), 1);
+  EXPECT_DOUBLE_EQ(fitted_grid_scale(views, {0, 0, 290, 200}, 20), 1);
 }
 
 }  // namespace
