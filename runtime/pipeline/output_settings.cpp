@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstdio>
 
+#include "core/camera/lookat_camera.hpp"
 #include "core/device/formats/devices.hpp"
 #include "core/device/page/atomic_file.hpp"
 #include "core/device/page/pen_style.hpp"
@@ -247,10 +248,35 @@ const NamedCamera& choose_camera(const FrameScene& scene, const std::optional<st
                  "its cameras: " + camera_list(scene), 64);
 }
 
+namespace {
+
+// The output goes to a mesh file (.off, .obj, .stl): the solids themselves, no picture.
+bool writes_solids_only(const FrameScene& scene, const RunSettings& run) {
+  const std::optional<std::string> name = run.output     ? run.output
+                                          : scene.output ? std::optional(scene.output->name)
+                                                         : std::nullopt;
+  if (!name) return false;
+  const std::optional<DeviceKind> kind = device_kind_for(std::filesystem::path(*name));
+  return kind == DeviceKind::Off || kind == DeviceKind::Obj || kind == DeviceKind::Stl;
+}
+
+}  // namespace
+
 FrameSettings resolve_target(const FrameScene& scene, std::size_t index, const RunSettings& run,
                              const Program& program) {
   FrameSettings s;
-  s.camera = &choose_camera(scene, run.camera, program.main().source->name());
+  if (scene.cameras.empty() && scene.views.empty() && !run.camera && writes_solids_only(scene, run)) {
+    auto own = std::make_shared<NamedCamera>();
+    own->name = "solids";
+    LookatParameters view;
+    view.eye = {1, -1, 1};
+    view.target = {0, 0, 0};
+    own->camera = lookat_camera(view);
+    s.own_camera = own;
+    s.camera = own.get();
+  } else {
+    s.camera = &choose_camera(scene, run.camera, program.main().source->name());
+  }
   s.sheet = !scene.views.empty() && !run.camera;
   s.hidden = run.hidden.value_or(scene.hidden.value_or(HiddenStyle::off()));
   // --levels N keeps the script's hidden pen, whose last level's pen must exist: said at the statement.

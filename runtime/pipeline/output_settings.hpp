@@ -26,7 +26,9 @@ struct RunSettings {
 };
 
 struct FrameSettings {
-  const NamedCamera* camera = nullptr;  // into the frame's scene (a sheet: its first view's)
+  const NamedCamera* camera = nullptr;  // into the frame's scene (a sheet: its first view's), or own_camera
+  // A mesh file's frame from a script with no camera: it draws nothing, so any camera serves the frame.
+  std::shared_ptr<const NamedCamera> own_camera;
   bool sheet = false;                   // the frame's views on one sheet (runtime/pipeline/sheet_render.hpp)
   // The camera with its picture frame on this page (core/device/page/page_layout.hpp framed_camera): what the
   // engine clips to and the devices lay out. Set by resolve_device().

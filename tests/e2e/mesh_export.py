@@ -10,6 +10,7 @@ Every file is read back by the small parsers below, not by the code that wrote i
     one '.stl' it is a usage error (64) that writes nothing;
   - a drilled, pocketed block exported to OFF and imported again draws the same visible lines as the
     original from the same camera (the round trip through another tool's file);
+  - a script without a camera exports its mesh (a picture from it is still an error);
   - an output naming the script's own imported mesh is refused.
 
     mesh_export.py HLRSCRIPT WORKDIR EXAMPLES_DIR
@@ -236,6 +237,17 @@ if abs(total(first) - total(second)) > 1e-6 * total(first):
     fail(f"round trip: {total(first)} of visible lines drawn, {total(second)} after export and import")
 if len(first) != len(second):
     fail(f"round trip: {len(first)} visible pieces, {len(second)} after export and import")
+
+# ---- no camera: a mesh file needs none, a picture still does ------------------------------------------
+nocam = write_script("no-camera", "draw box(min: (0, 0, 0), max: (2, 3, 4))\n")
+out = os.path.join(work, "no-camera.obj")
+run(nocam, out)
+pts, fs, objs = read_obj(out)
+check_closed(out, fs)
+check_volume(out, pts, fs, 24, 1e-12)
+r = run(nocam, os.path.join(work, "no-camera.pdf"), expect=65)
+if "camera" not in r.stderr or os.path.exists(os.path.join(work, "no-camera.pdf")):
+    fail(f"a PDF without a camera: {r.stderr!r}")
 
 # ---- an output may not overwrite an input ------------------------------------------------------------
 r = run(again, exported, expect=64)
