@@ -21,14 +21,15 @@ namespace {
 using Triangle = std::array<VertexIndex, 3>;
 
 // One solid's surface as it goes into the file: the vertices on its faces (numbered from 0 in the order
-// they are first used) and its faces as polygons, a face with holes as its triangles.
+// they are first used) and its faces as polygons — a face with holes, or every face for a file of triangles,
+// as its triangles.
 struct SurfaceOut {
   std::vector<Point3> vertices;
   std::vector<std::vector<std::uint32_t>> polygons;
   std::vector<Vector3> normals;  // per polygon, the face's outward normal
 };
 
-SurfaceOut surface_of(const Solid& s) {
+SurfaceOut surface_of(const Solid& s, bool triangles_only) {
   SurfaceOut out;
   std::vector<std::uint32_t> number(s.vertices.size(), std::numeric_limits<std::uint32_t>::max());
   auto use = [&](VertexIndex v) {
@@ -41,7 +42,7 @@ SurfaceOut surface_of(const Solid& s) {
   std::vector<Triangle> triangles;
   for (std::size_t f = 0; f < s.faces.size(); ++f) {
     const Face& face = s.faces[f];
-    if (face.rings.size() == 1) {
+    if (face.rings.size() == 1 && (!triangles_only || face.rings[0].vertices.size() == 3)) {
       std::vector<std::uint32_t> polygon;
       for (const VertexIndex v : face.rings[0].vertices) polygon.push_back(use(v));
       out.polygons.push_back(std::move(polygon));
@@ -147,55 +148,25 @@ void append_float(std::string& out, double value) {
   append_le32(out, std::bit_cast<std::uint32_t>(static_cast<float>(value)));
 }
 
+// `surfaces` are triangles only (surface_of(..., true)).
 std::string stl_bytes(const std::vector<SurfaceOut>& surfaces, const std::string& title) {
   std::uint64_t triangles = 0;
-  for (const SurfaceOut& s : surfaces)
-    for (const auto& polygon : s.polygons) triangles += polygon.size() - 2;
+  for (const SurfaceOut& s : surfaces) triangles += s.polygons.size();
   if (triangles > std::numeric_limits<std::uint32_t>::max())
     throw DeviceError("STL holds at most 4294967295 triangles");
   // The header must not start with "solid": readers would take the file for ASCII STL.
-  std::string header = "hlrscript " + one_line(title);
-  header.resize(80, ' ');
-  std::string out = header;
+  std::string out = "hlrscript " + one_line(title);
+  out.resize(80, ' ');
   out.reserve(84 + 50 * triangles);
-  append_le32(out, 0);  // the count, set once the triangles are written
-  auto put = [&](const SurfaceOut& s, Vector3 normal, std::uint32_t a, std::uint32_t b, std::uint32_t c) {
-    append_float(out, normal.x);
-    append_float(out, normal.y);
-    append_float(out, normal.z);
-    for (const std::uint32_t v : {a, b, c}) {
-      append_float(out, s.vertices[v].x);
-      append_float(out, s.vertices[v].y);
-      append_float(out, s.vertices[v].z);
-    }
-    out += '\0';
-    out += '\0';  // the attribute byte count
-  };
+  append_le32(out, static_cast<std::uint32_t>(triangles));
   for (const SurfaceOut& s : surfaces)
     for (std::size_t i = 0; i < s.polygons.size(); ++i) {
-      const auto& polygon = s.polygons[i];
-      if (polygon.size() == 3) {
-        put(s, s.normals[i], polygon[0], polygon[1], polygon[2]);
-        continue;
-      }
-      // A face without holes is a simple polygon, but it may be concave: cut it as the booleans do.
-      Solid one;
-      one.vertices.reserve(polygon.size());
-      Ring ring;
-      for (std::size_t k = 0; k < polygon.size(); ++k) {
-        one.vertices.push_back(s.vertices[polygon[k]]);
-        ring.vertices.push_back(static_cast<VertexIndex>(k));
-      }
-      one.faces.emplace_back().rings.push_back(std::move(ring));
-      one.planes.push_back(Plane{s.normals[i], 0});
-      std::vector<Triangle> pieces;
-      face_triangles(one, 0, pieces);
-      for (const Triangle& t : pieces) put(s, s.normals[i], polygon[t[0]], polygon[t[1]], polygon[t[2]]);
+      const Vector3 n = s.normals[i];
+      for (const double c : {n.x, n.y, n.z}) append_float(out, c);
+      for (const std::uint32_t v : s.polygons[i])
+        for (const double c : {s.vertices[v].x, s.vertices[v].y, s.vertices[v].z}) append_float(out, c);
+      out.append(2, '\0');  // the attribute byte count
     }
-  // A polygon with a vertex lying on the edge between two others is cut into fewer than n − 2 triangles.
-  const std::uint32_t written = static_cast<std::uint32_t>((out.size() - 84) / 50);
-  for (int i = 0; i < 4; ++i)
-    out[80 + static_cast<std::size_t>(i)] = static_cast<char>((written >> (8 * i)) & 0xffu);
   return out;
 }
 
@@ -227,7 +198,7 @@ std::string mesh_file_bytes(const Scene& scene, MeshFormat format, const std::st
   std::vector<SurfaceOut> surfaces;
   std::vector<std::string> names;
   for (const SceneObject& object : scene.objects) {
-    SurfaceOut surface = surface_of(*object.solid);
+    SurfaceOut surface = surface_of(*object.solid, format == MeshFormat::Stl);
     if (surface.polygons.empty()) continue;
     check_finite(surface);
     surfaces.push_back(std::move(surface));

@@ -118,7 +118,8 @@ void Evaluator::exec_views(const lang::ViewsStmt& views, const lang::Stmt& stmt,
            list.hint);
     third = word == "third";
   }
-  const bool iso = find(given, "iso") ? find(given, "iso")->value.as_bool() : true;
+  const GivenOption* iso_option = find(given, "iso");
+  const bool iso = iso_option ? iso_option->value.as_bool() : true;
   ViewGridCell cell;
   if (const GivenOption* o = find(given, "gap"))
     cell.gap_mm = number_in(

@@ -77,6 +77,23 @@ void warn_about_view(const FrameScene& scene, const NamedCamera& named, const Ca
 }
 
 // Everything one frame needs, from the script to the bytes for its file.
+// The warnings a sheet's page gives: views off the margins or over one another (sheet_warnings), and
+// dimensions that could not be drawn.
+void sheet_page_warnings(const FrameScene& scene, const PageSpec& spec, const PagePlot& plot, bool framed,
+                         std::vector<lang::Diagnostic>& out) {
+  for (lang::Diagnostic& d : sheet_warnings(scene, spec, plot.view_boxes, framed))
+    out.push_back(std::move(d));
+  for (std::size_t i = 0; i < plot.dimension_problems.size() && i < scene.dimensions.size(); ++i)
+    if (const std::string& problem = plot.dimension_problems[i]; !problem.empty()) {
+      lang::Diagnostic d;
+      d.severity = lang::Severity::Warning;
+      d.span = scene.dimensions[i].span;
+      d.message = "the dimension is not drawn: " + problem;
+      d.hint = "measure between points apart in this view, or put it in another view";
+      out.push_back(std::move(d));
+    }
+}
+
 void run_frame(const Program& program, int frame, double fps, const PipelineOptions& options,
                unsigned engine_threads, std::optional<FrameScene>& first, FrameJob& job) {
   const RunSettings& run = options.run;
@@ -118,8 +135,7 @@ void run_frame(const Program& program, int frame, double fps, const PipelineOpti
 
   const Camera& camera = settings.camera_on_page;
   // A mesh file holds the solids themselves (DeviceFrame::scene): no hidden lines to find for it.
-  const DeviceKind kind = settings.target.device;
-  const bool solids_only = kind == DeviceKind::Off || kind == DeviceKind::Obj || kind == DeviceKind::Stl;
+  const bool solids_only = writes_solids(settings.target.device);
   const auto render = [&](const Scene& drawn, FrameResult& result) {
     if (solids_only) return;
     try {
@@ -187,11 +203,14 @@ void run_frame(const Program& program, int frame, double fps, const PipelineOpti
     settings.plot.extent = extent;
   }
   r.render_seconds = seconds_since(start);
-  if (settings.sheet)
-    for (const ViewSetting& v : scene.views)
-      warn_about_view(scene, v.camera, v.camera.camera, job.view_warnings);
-  else
-    warn_about_view(scene, *settings.camera, camera, job.view_warnings);
+  // A mesh file draws no page: nothing to warn about how the views look.
+  if (!solids_only) {
+    if (settings.sheet)
+      for (const ViewSetting& v : scene.views)
+        warn_about_view(scene, v.camera, v.camera.camera, job.view_warnings);
+    else
+      warn_about_view(scene, *settings.camera, camera, job.view_warnings);
+  }
   // Each piece costs the plan and the device more than the engine: a runaway count stops here.
   if (result.segments.size() > limits.segments)
     fail(settings.camera->span,
@@ -217,18 +236,8 @@ void run_frame(const Program& program, int frame, double fps, const PipelineOpti
     title.scale = sheet->scale_text;
     frame_out.plot = plot_sheet(result.segments, sheet->views, title, settings.plot);
     frame_out.views = &sheet->views;
-    for (lang::Diagnostic& d :
-         sheet_warnings(scene, settings.plot.spec, frame_out.plot.view_boxes, title.framed))
-      job.view_warnings.push_back(std::move(d));
-    for (std::size_t i = 0; i < frame_out.plot.dimension_problems.size() && i < scene.dimensions.size(); ++i)
-      if (const std::string& problem = frame_out.plot.dimension_problems[i]; !problem.empty()) {
-        lang::Diagnostic d;
-        d.severity = lang::Severity::Warning;
-        d.span = scene.dimensions[i].span;
-        d.message = "the dimension is not drawn: " + problem;
-        d.hint = "measure between points apart in this view, or put it in another view";
-        job.view_warnings.push_back(std::move(d));
-      }
+    if (!solids_only)
+      sheet_page_warnings(scene, settings.plot.spec, frame_out.plot, title.framed, job.view_warnings);
   } else {
     frame_out.plot = plot_page(result.segments, camera.frame, settings.caption, settings.plot);
   }

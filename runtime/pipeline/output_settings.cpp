@@ -257,7 +257,7 @@ bool writes_solids_only(const FrameScene& scene, const RunSettings& run) {
                                                          : std::nullopt;
   if (!name) return false;
   const std::optional<DeviceKind> kind = device_kind_for(std::filesystem::path(*name));
-  return kind == DeviceKind::Off || kind == DeviceKind::Obj || kind == DeviceKind::Stl;
+  return kind && writes_solids(*kind);
 }
 
 }  // namespace

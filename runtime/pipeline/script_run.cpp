@@ -273,7 +273,7 @@ int run_loaded_program(const Program& program, const RunOptions& o, std::ostream
     }
     // A mesh file holds the solids' faces, not the drawing's segments.
     const std::optional<DeviceKind> kind = device_kind_for(result.files.front());
-    const bool mesh = kind == DeviceKind::Off || kind == DeviceKind::Obj || kind == DeviceKind::Stl;
+    const bool mesh = kind && writes_solids(*kind);
     char line[256];
     std::snprintf(line, sizeof line, ": %zu %s, %zu %s in %.2f s\n", result.frame_count,
                   result.frame_count == 1 ? "frame" : "frames", mesh ? faces : segments,

@@ -169,6 +169,15 @@ check_closed(out, fs)
 if fan_area_and_volume(pts, fs) <= 0:
     fail(f"{out}: the bracket encloses no volume")
 
+# ---- a sheet of views: its mesh, and no warnings about a page a mesh file does not draw ----------------
+views = os.path.join(examples, "sheets", "standard-views.hls")
+out = os.path.join(work, "standard-views.stl")
+r = run(views, out)
+if "warning" in r.stderr:
+    fail(f"{out}: warnings about the sheet's views for a mesh file: {r.stderr!r}")
+pts, fs = read_stl(out)
+check_closed(out, fs)
+
 # ---- world coordinates -------------------------------------------------------------------------------
 placed = write_script("placed", """
 draw place(box(min: (0, 0, 0), max: (1, 2, 3)), translate(10, 20, 30))

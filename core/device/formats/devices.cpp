@@ -67,6 +67,10 @@ bool one_frame_per_file(DeviceKind kind) {
   return kind != DeviceKind::Pdf && kind != DeviceKind::Json && kind != DeviceKind::JsonLines;
 }
 
+bool writes_solids(DeviceKind kind) {
+  return kind == DeviceKind::Off || kind == DeviceKind::Obj || kind == DeviceKind::Stl;
+}
+
 const char* supported_extensions() {
   return "pdf, svg, png, hpgl (or .plt), steps, json, jsonl, gcode (or .nc), dxf, off, obj, stl";
 }

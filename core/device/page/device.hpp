@@ -88,6 +88,8 @@ enum class DeviceKind { Pdf, Svg, Png, Hpgl, Steps, Json, JsonLines, Gcode, Dxf,
 std::optional<DeviceKind> device_kind_for(const std::filesystem::path& path);
 const char* device_kind_name(DeviceKind kind);  // "PDF", "SVG", ..., "plotter-steps", "JSON"
 bool one_frame_per_file(DeviceKind kind);
+// The meshes (.off, .obj, .stl): the frame's solids, not a picture of them (no camera or hidden lines needed).
+bool writes_solids(DeviceKind kind);
 // "pdf, svg, png, hpgl (or .plt), steps, json, jsonl, gcode (or .nc), dxf, off, obj, stl": for messages.
 const char* supported_extensions();
 

@@ -129,13 +129,18 @@ TEST(DimensionStrokes, DistancesInOtherUnitsAreConvertedAndMarked) {
 
 // The angle at world (10, 0, 0) between legs along +x and +z: page vertex (110, 100), legs to the right
 // (+x) and up the page (−y), a quarter circle of radius 15 between them.
-TEST(DimensionStrokes, ARightAngleIsAQuarterArcBetweenItsLegs) {
-  const Front f;
+PageDimension right_angle() {
   PageDimension d;
   d.vertex = Point3{10, 0, 0};
   d.from = {40, 0, 0};
   d.to = {10, 0, 40};
   d.radius_mm = 15;
+  return d;
+}
+
+TEST(DimensionStrokes, ARightAngleIsAQuarterArcBetweenItsLegs) {
+  const Front f;
+  PageDimension d = right_angle();
   const DimensionDrawing drawing = dimension_strokes(d, f.camera, f.layout);
   ASSERT_TRUE(drawing.problem.empty()) << drawing.problem;
   EXPECT_NEAR(drawing.value, 90, 1e-12);
@@ -198,11 +203,7 @@ TEST(DimensionStrokes, AnAngleMeasuresInSpaceAndExtendsShortLegs) {
 
 TEST(DimensionStrokes, ALegThatIsNoEdgeIsDrawnFromTheVertex) {
   const Front f;
-  PageDimension d;
-  d.vertex = Point3{10, 0, 0};
-  d.from = {40, 0, 0};
-  d.to = {10, 0, 40};
-  d.radius_mm = 15;
+  PageDimension d = right_angle();
   d.extend_from = true;  // the leg along +x: from the vertex (110, 100) to 2 mm past the arc
   const DimensionDrawing drawing = dimension_strokes(d, f.camera, f.layout);
   ASSERT_GE(drawing.strokes.size(), 1U);
