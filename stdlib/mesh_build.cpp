@@ -515,32 +515,72 @@ class Builder {
     return "repair the mesh in a modelling tool and export it again";
   }
 
-  ImportedMesh build() {
+  // Passes the kept vertices (raw indices, file order), the faces and the lines to a SolidBuilder and builds;
+  // `spatial`: vertices and faces in spatial order, else in the file's. Fills raw_of (builder vertex → raw
+  // vertex). A spatial build's messages are never shown (build() builds again in file order when there are
+  // any), so out_raw_ keeps the file's face order. Where not spatial, what only fed the builder is released
+  // before it runs, so that its memory is reused rather than fresh.
+  SolidBuildResult build_solid(const std::vector<std::uint32_t>& kept, bool spatial,
+                               std::vector<std::uint32_t>& raw_of) {
     SolidBuildOptions build_options;
     build_options.crease_angle_deg = options_.crease_angle_deg;
     build_options.fix_winding = true;
     SolidBuilder builder(build_options);
+    raw_of = kept;
+    if (spatial) {
+      std::vector<Point3> points(kept.size());
+      for (std::size_t i = 0; i < kept.size(); ++i) points[i] = raw_.vertices[kept[i]].position;
+      const std::vector<std::uint32_t> order = morton_order(points);
+      for (std::size_t i = 0; i < kept.size(); ++i) raw_of[i] = kept[order[i]];
+    }
+    std::vector<VertexIndex> index_of(raw_.vertices.size(), 0);  // raw vertex → builder vertex
+    builder.reserve(raw_of.size(), out_ends_.size(), out_vertices_.size());
+    for (std::uint32_t v : raw_of)
+      index_of[v] = builder.add_vertex(raw_.vertices[v].position, make_tag(TagKind::Vertex, v));
+    builder.label_indexed_vertices([&](VertexIndex i) { return vertex_name(raw_of[i]); });
+    if (spatial) {
+      std::vector<std::uint32_t> vertices(out_vertices_.size());
+      for (std::size_t i = 0; i < vertices.size(); ++i) vertices[i] = index_of[out_vertices_[i]];
+      const std::vector<std::uint32_t> order = faces_by_least_vertex(vertices, out_ends_, raw_of.size());
+      std::vector<std::uint32_t> ordered;
+      std::vector<std::size_t> ends;
+      ordered.reserve(vertices.size());
+      ends.reserve(order.size());
+      for (std::size_t k = 0; k < order.size(); ++k) {
+        const std::size_t f = order[k], begin = f == 0 ? 0 : out_ends_[f - 1];
+        ordered.insert(ordered.end(), vertices.begin() + static_cast<std::ptrdiff_t>(begin),
+                       vertices.begin() + static_cast<std::ptrdiff_t>(out_ends_[f]));
+        ends.push_back(ordered.size());
+      }
+      builder.add_indexed_polygons(ordered, ends, make_tag(TagKind::Face, 0));
+    } else {
+      for (std::uint32_t& v : out_vertices_) v = index_of[v];
+      builder.add_indexed_polygons(out_vertices_, out_ends_, make_tag(TagKind::Face, 0));
+    }
+    for (std::size_t i = 0; i < lines_.size(); ++i)
+      builder.add_indexed_line(index_of[lines_[i].a], index_of[lines_[i].b], make_tag(TagKind::Line, i));
+    if (!spatial)
+      release(out_vertices_), release(out_ends_), release(raw_.face_vertices), release(raw_.face_ends);
+    release(index_of);
+    return builder.build();
+  }
 
+  ImportedMesh build() {
     // Only vertices some face or line uses, numbered in messages as in the file.
     const std::size_t n = raw_.vertices.size();
     std::vector<bool> used(n, false);
     for (std::uint32_t v : out_vertices_) used[v] = true;
     for (const BuiltLine& l : lines_) used[l.a] = used[l.b] = true;
     std::size_t unused = 0, first_unused = 0;
-    std::vector<VertexIndex> index_of(n, 0);  // raw vertex → builder vertex
-    std::vector<std::uint32_t> raw_of;        // builder vertex → raw vertex
-    raw_of.reserve(n);
-    builder.reserve(n, out_ends_.size(), out_vertices_.size());
+    std::vector<std::uint32_t> kept;  // the raw vertices passed on, in file order
+    kept.reserve(n);
     for (std::size_t v = 0; v < n; ++v) {
       if (canon_[v] != v) continue;
-      if (used[v]) {
-        index_of[v] = builder.add_vertex(raw_.vertices[v].position, make_tag(TagKind::Vertex, v));
-        raw_of.push_back(static_cast<std::uint32_t>(v));
-      } else if (unused++ == 0) {
+      if (used[v])
+        kept.push_back(static_cast<std::uint32_t>(v));
+      else if (unused++ == 0)
         first_unused = v;
-      }
     }
-    builder.label_indexed_vertices([&](VertexIndex i) { return vertex_name(raw_of[i]); });
     if (unused > 0)
       warnings_.add(
           "unused-vertex",
@@ -548,17 +588,19 @@ class Builder {
              "vertex " + vertex_name(static_cast<std::uint32_t>(first_unused)) +
                  (unused > 1 ? " and " + std::to_string(unused - 1) + " other vertices are" : " is") +
                  " used by no face or line; left out"));
-    for (std::uint32_t& v : out_vertices_) v = index_of[v];
-    builder.add_indexed_polygons(out_vertices_, out_ends_, make_tag(TagKind::Face, 0));
-    for (std::size_t i = 0; i < lines_.size(); ++i)
-      builder.add_indexed_line(index_of[lines_[i].a], index_of[lines_[i].b], make_tag(TagKind::Line, i));
-    // The builder has its own copies: what only fed it goes before it runs, so that its memory is reused
-    // rather than fresh (messages need the sources, the vertices, raw_of and out_raw_).
-    release(out_vertices_), release(out_ends_), release(canon_), release(positions_), release(index_of),
-        release(used);
-    release(raw_.face_vertices), release(raw_.face_ends);
-
-    SolidBuildResult result = builder.build();
+    release(used), release(canon_), release(positions_);
+    // A large mesh goes to the builder in spatial order (mesh_locality.cpp): the solid keeps that order,
+    // and the engine's walks over it then find their vertices and neighbours near each other. The builder
+    // reports problems in the order it meets them, so a mesh it finds any in is built again in the file's
+    // order, for messages as they always were; a clean mesh is the same solid either way, but for numbering.
+    std::vector<std::uint32_t> raw_of;  // builder vertex → raw vertex
+    SolidBuildResult result;
+    if (out_ends_.size() >= kSpatialOrderFaces) {
+      result = build_solid(kept, true, raw_of);
+      if (!result.diagnostics.empty()) result = build_solid(kept, false, raw_of);
+    } else {
+      result = build_solid(kept, false, raw_of);
+    }
     std::size_t errors = 0, inside_out = 0;
     const SolidDiagnostic* first_error = nullptr;
     std::optional<MeshProblem> first_inside_out;

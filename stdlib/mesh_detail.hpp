@@ -119,6 +119,19 @@ RawMesh read_stl(std::string_view bytes, const std::string& name, const MeshImpo
 // Solid through SolidBuilder and turns its diagnostics into warnings or a MeshImportError.
 ImportedMesh build_mesh(RawMesh raw, const MeshImportOptions& options);
 
+// ---- locality (mesh_locality.cpp) ----------------------------------------------------------------------
+
+// Meshes of at least this many faces reach the builder in spatial order (mesh_build.cpp): below it a mesh's
+// vertices and faces stay in cache whatever their order.
+constexpr std::size_t kSpatialOrderFaces = 8192;
+// The points' indices in the order of a Morton curve through their bounding box (1024 cells an axis; points
+// in one cell keep their order).
+std::vector<std::uint32_t> morton_order(std::span<const Point3> points);
+// The faces (face k lists vertices[ends[k − 1] .. ends[k]), from 0 for k = 0) in the order of their least
+// vertex; faces with the same least vertex keep their order.
+std::vector<std::uint32_t> faces_by_least_vertex(std::span<const std::uint32_t> vertices,
+                                                 std::span<const std::size_t> ends, std::size_t vertex_count);
+
 // ---- problems ------------------------------------------------------------------------------------------
 
 [[noreturn]] void fail(const std::string& file, int line, int column, std::string message,
