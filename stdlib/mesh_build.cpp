@@ -559,8 +559,8 @@ class Builder {
     }
     for (std::size_t i = 0; i < lines_.size(); ++i)
       builder.add_indexed_line(index_of[lines_[i].a], index_of[lines_[i].b], make_tag(TagKind::Line, i));
-    if (!spatial)
-      release(out_vertices_), release(out_ends_), release(raw_.face_vertices), release(raw_.face_ends);
+    release(raw_.face_vertices), release(raw_.face_ends);
+    if (!spatial) release(out_vertices_), release(out_ends_);
     release(index_of);
     return builder.build();
   }
