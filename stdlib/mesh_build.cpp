@@ -552,6 +552,7 @@ class Builder {
                        vertices.begin() + static_cast<std::ptrdiff_t>(out_ends_[f]));
         ends.push_back(ordered.size());
       }
+      release(vertices);
       builder.add_indexed_polygons(ordered, ends, make_tag(TagKind::Face, 0));
     } else {
       for (std::uint32_t& v : out_vertices_) v = index_of[v];
@@ -559,7 +560,6 @@ class Builder {
     }
     for (std::size_t i = 0; i < lines_.size(); ++i)
       builder.add_indexed_line(index_of[lines_[i].a], index_of[lines_[i].b], make_tag(TagKind::Line, i));
-    release(raw_.face_vertices), release(raw_.face_ends);
     if (!spatial) release(out_vertices_), release(out_ends_);
     release(index_of);
     return builder.build();
@@ -588,7 +588,7 @@ class Builder {
              "vertex " + vertex_name(static_cast<std::uint32_t>(first_unused)) +
                  (unused > 1 ? " and " + std::to_string(unused - 1) + " other vertices are" : " is") +
                  " used by no face or line; left out"));
-    release(used), release(canon_), release(positions_);
+    release(used), release(canon_), release(positions_), release(raw_.face_vertices), release(raw_.face_ends);
     // A large mesh goes to the builder in spatial order (mesh_locality.cpp): the solid keeps that order,
     // and the engine's walks over it then find their vertices and neighbours near each other. The builder
     // reports problems in the order it meets them, so a mesh it finds any in is built again in the file's
