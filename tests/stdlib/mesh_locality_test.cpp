@@ -1,8 +1,7 @@
 // Spatial order of large imported meshes (stdlib/mesh_locality.cpp, mesh_build.cpp): the orders themselves
 // on cases worked out by hand, and an imported shuffled torus against the same triangles built directly by
 // SolidBuilder in the file's order — the same solid but for numbering, drawing the same, laid out along the
-// space, and with
-// the file's own face numbers in its messages.
+// space, and with the file's own face numbers in its messages.
 #include <gtest/gtest.h>
 
 #include <algorithm>
