@@ -250,7 +250,7 @@ void run_frame(const Program& program, int frame, double fps, const PipelineOpti
       const auto encode_start = Clock::now();
       job.encoded = settings.device->encode(frame_out);
       r.encode_seconds = seconds_since(encode_start);
-      r.encoded_bytes = job.encoded.bytes.size() + job.encoded.file_head.size();
+      r.encoded_bytes = job.encoded.size();
     } catch (const DeviceError& e) {
       throw OutputError("cannot write '" + settings.target.path.string() + "': " + e.what(), settings.target);
     }

@@ -171,7 +171,7 @@ class PdfDevice : public Device {
   EncodedFrame encode(const DeviceFrame& frame) const override {
     PdfPage page = make_pdf_page(frame.plot.page, o_);
     EncodedFrame out;
-    out.bytes = std::move(page.content);
+    out.content_streams = std::move(page.contents);
     out.page_width_mm = page.width_mm;
     out.page_height_mm = page.height_mm;
     return out;
@@ -185,7 +185,7 @@ class PdfDevice : public Device {
    public:
     PdfFile(const fs::path& path, const PdfOptions& o) : pdf_(path, o) {}
     void append(EncodedFrame frame) override {
-      pdf_.add_page({frame.page_width_mm, frame.page_height_mm, std::move(frame.bytes)});
+      pdf_.add_page({frame.page_width_mm, frame.page_height_mm, std::move(frame.content_streams)});
     }
     void finish() override { pdf_.finish(); }
 

@@ -32,10 +32,11 @@ struct PdfOptions {
   bool decorations = true;    // border and caption
 };
 
-// One page, ready to be written: its size and its compressed content stream.
+// One page, ready to be written: its size and its content stream, compressed in parts (FlateDecode each;
+// the page lists them in order, and PDF reads them as one stream).
 struct PdfPage {
   double width_mm = 0, height_mm = 0;
-  std::string content;  // FlateDecode
+  std::vector<std::string> contents;
 };
 
 // Throws DeviceError for a page check_page_spec() refuses or a non-finite point.
@@ -59,6 +60,7 @@ class PdfWriter {
   std::uint64_t offset_ = 0;
   std::vector<std::uint64_t> offsets_;  // by object number; 0 unused
   std::vector<std::size_t> page_objects_;
+  std::size_t next_object_;  // the number the next page's first object gets
 };
 
 // make_pdf_page() for every page, written atomically (core/device/page/atomic_file.hpp).

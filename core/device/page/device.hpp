@@ -52,9 +52,15 @@ struct DeviceFrame {
 
 // A frame's share of a file, made by encode() on any thread.
 struct EncodedFrame {
-  std::string bytes;      // what the file gets for this frame (PDF: the page's compressed content)
+  std::string bytes;      // what the file gets for this frame (PDF: nothing, see content_streams)
   std::string file_head;  // JSON: the document's opening, written before the first frame
   double page_width_mm = 0, page_height_mm = 0;  // PDF: the page's size
+  std::vector<std::string> content_streams;      // PDF: the page's compressed content, in parts
+  std::size_t size() const {                     // bytes in all
+    std::size_t n = bytes.size() + file_head.size();
+    for (const std::string& s : content_streams) n += s.size();
+    return n;
+  }
 };
 
 // A file being written: frames arrive in frame order on one thread. finish() completes it; a file that
@@ -88,7 +94,8 @@ enum class DeviceKind { Pdf, Svg, Png, Hpgl, Steps, Json, JsonLines, Gcode, Dxf,
 std::optional<DeviceKind> device_kind_for(const std::filesystem::path& path);
 const char* device_kind_name(DeviceKind kind);  // "PDF", "SVG", ..., "plotter-steps", "JSON"
 bool one_frame_per_file(DeviceKind kind);
-// The meshes (.off, .obj, .stl): the frame's solids, not a picture of them (no camera or hidden lines needed).
+// The meshes (.off, .obj, .stl): the frame's solids, not a picture of them (no camera or hidden lines
+// needed).
 bool writes_solids(DeviceKind kind);
 // "pdf, svg, png, hpgl (or .plt), steps, json, jsonl, gcode (or .nc), dxf, off, obj, stl": for messages.
 const char* supported_extensions();

@@ -4,12 +4,14 @@
 #include "core/device/formats/pdf_writer.hpp"
 
 #include <gtest/gtest.h>
+#include <zlib.h>
 
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <string_view>
 
 #include "core/device/page/atomic_file.hpp"
 #include "tests/support/temp_dir.hpp"
@@ -97,6 +99,55 @@ TEST_F(PdfWriterTest, WithoutDecorationsThereIsNoText) {
   const fs::path target = dir_ / "plain.pdf";
   write_pdf(target, {page_with("not printed")}, o);
   EXPECT_EQ(output_of("pdftotext '" + target.string() + "' -").find("not printed"), std::string::npos);
+}
+
+// A page of many strokes (about 1 MB of operators) is written as several content streams, compressed apart:
+// each ends at a line end, they read back in order as every point of every stroke, the page lists them
+// all, poppler draws it, and the bytes are the same from run to run.
+TEST_F(PdfWriterTest, ALargePageIsSeveralContentStreamsReadInOrder) {
+  PlotPage page = page_with("");
+  page.strokes.clear();
+  std::size_t points = 0;
+  for (int i = 0; i < 20000; ++i) {  // zigzags across the drawing area, no two alike
+    const double y = 11 + 0.0059 * i, x = 11 + (i % 97) * 1.9;
+    page.strokes.push_back({{{x, y}, {x + 0.7, y + 0.3}, {x + 1.3, y}}, 1, StrokeLayer::Visible});
+    points += 3;
+  }
+  const fs::path target = dir_ / "large.pdf";
+  write_pdf(target, {page}, {});
+  const std::string file = bytes_of(target);
+  std::string text;  // the content streams, inflated and joined in file order
+  std::size_t streams = 0;
+  for (std::size_t at = file.find("stream\n"); at != std::string::npos; at = file.find("stream\n", at)) {
+    const std::size_t begin = at + 7, end = file.find("\nendstream", begin);
+    ASSERT_NE(end, std::string::npos);
+    std::string part(4u << 20, '\0');
+    uLongf size = part.size();
+    ASSERT_EQ(uncompress(reinterpret_cast<Bytef*>(part.data()), &size,
+                         reinterpret_cast<const Bytef*>(file.data() + begin), end - begin),
+              Z_OK);
+    part.resize(size);
+    ASSERT_FALSE(part.empty());
+    EXPECT_EQ(part.back(), '\n') << "stream " << streams + 1;
+    text += part;
+    ++streams;
+    at = end + std::string_view("\nendstream").size();
+  }
+  EXPECT_GE(streams, 3u);
+  EXPECT_NE(file.find("/Contents [5 0 R 6 0 R 7 0 R"), std::string::npos);
+  std::size_t moves = 0, lines = 0;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);) {
+    moves += line.size() > 2 && line.ends_with(" m");
+    lines += line.size() > 2 && line.ends_with(" l");
+  }
+  EXPECT_EQ(moves, page.strokes.size());
+  EXPECT_EQ(moves + lines, points);
+  const std::string info = output_of("pdftoppm -r 20 -png -singlefile '" + target.string() + "' '" +
+                                     (dir_ / "large").string() + "'");
+  EXPECT_TRUE(fs::exists(dir_ / "large.png")) << info;
+  write_pdf(dir_ / "again.pdf", {page}, {});
+  EXPECT_EQ(file, bytes_of(dir_ / "again.pdf"));
 }
 
 TEST_F(PdfWriterTest, BadPagesAreRefusedAndNothingIsWritten) {
