@@ -594,13 +594,9 @@ class Builder {
     // reports problems in the order it meets them, so a mesh it finds any in is built again in the file's
     // order, for messages as they always were; a clean mesh is the same solid either way, but for numbering.
     std::vector<std::uint32_t> raw_of;  // builder vertex → raw vertex
-    SolidBuildResult result;
-    if (out_ends_.size() >= kSpatialOrderFaces) {
-      result = build_solid(kept, true, raw_of);
-      if (!result.diagnostics.empty()) result = build_solid(kept, false, raw_of);
-    } else {
-      result = build_solid(kept, false, raw_of);
-    }
+    const bool spatial = out_ends_.size() >= kSpatialOrderFaces;
+    SolidBuildResult result = build_solid(kept, spatial, raw_of);
+    if (spatial && !result.diagnostics.empty()) result = build_solid(kept, false, raw_of);
     std::size_t errors = 0, inside_out = 0;
     const SolidDiagnostic* first_error = nullptr;
     std::optional<MeshProblem> first_inside_out;

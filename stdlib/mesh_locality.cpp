@@ -3,8 +3,8 @@
 // frame's set-up and examination — walks faces and fetches their vertices, waiting on memory at each.
 #include <algorithm>
 #include <cstdint>
-#include <utility>
 
+#include "core/counting_sort.hpp"
 #include "core/geometry/box3.hpp"
 #include "stdlib/mesh_detail.hpp"
 
@@ -21,29 +21,12 @@ std::uint32_t spread_bits(std::uint32_t v) {
   return v;
 }
 
-// Indices 0..keys.size()-1 stably sorted by their 30-bit keys: two counting passes of 15 bits.
-std::vector<std::uint32_t> sorted_by_key(const std::vector<std::uint32_t>& keys) {
-  const auto n = static_cast<std::uint32_t>(keys.size());
-  std::vector<std::uint32_t> order(n), buffer(n);
-  for (std::uint32_t i = 0; i < n; ++i) order[i] = i;
-  std::vector<std::uint32_t> counts(1u << 15);
-  for (const int shift : {0, 15}) {
-    std::fill(counts.begin(), counts.end(), 0u);
-    for (std::uint32_t i : order) ++counts[(keys[i] >> shift) & 0x7fffu];
-    std::uint32_t sum = 0;
-    for (std::uint32_t& c : counts) sum += std::exchange(c, sum);
-    for (std::uint32_t i : order) buffer[counts[(keys[i] >> shift) & 0x7fffu]++] = i;
-    order.swap(buffer);
-  }
-  return order;
-}
-
 }  // namespace
 
 std::vector<std::uint32_t> morton_order(std::span<const Point3> points) {
   Box3 box;
   for (Point3 p : points) box.include(p);
-  std::vector<std::uint32_t> keys(points.size());
+  std::vector<std::uint64_t> keyed(points.size());  // the point's code above its index
   const Point3 lo = box.lo;
   const double scale[3] = {box.hi.x > lo.x ? 1023.0 / (box.hi.x - lo.x) : 0.0,
                            box.hi.y > lo.y ? 1023.0 / (box.hi.y - lo.y) : 0.0,
@@ -53,10 +36,15 @@ std::vector<std::uint32_t> morton_order(std::span<const Point3> points) {
   };
   for (std::size_t i = 0; i < points.size(); ++i) {
     const Point3 p = points[i];
-    keys[i] = spread_bits(cell((p.x - lo.x) * scale[0])) | spread_bits(cell((p.y - lo.y) * scale[1])) << 1 |
-              spread_bits(cell((p.z - lo.z) * scale[2])) << 2;
+    const std::uint64_t code = spread_bits(cell((p.x - lo.x) * scale[0])) |
+                               spread_bits(cell((p.y - lo.y) * scale[1])) << 1 |
+                               spread_bits(cell((p.z - lo.z) * scale[2])) << 2;
+    keyed[i] = code << 32 | i;
   }
-  return sorted_by_key(keys);
+  sort_by_30_bits(keyed, 32);
+  std::vector<std::uint32_t> order(keyed.size());
+  for (std::size_t i = 0; i < keyed.size(); ++i) order[i] = static_cast<std::uint32_t>(keyed[i]);
+  return order;
 }
 
 std::vector<std::uint32_t> faces_by_least_vertex(std::span<const std::uint32_t> vertices,

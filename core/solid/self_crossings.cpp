@@ -13,6 +13,7 @@
 #include <utility>
 #include <vector>
 
+#include "core/counting_sort.hpp"
 #include "core/geometry/box3.hpp"
 #include "core/geometry/exact_crossing.hpp"
 #include "core/geometry/exact_predicates.hpp"
@@ -35,27 +36,6 @@ constexpr std::uint64_t kFaceMask = 0x7fffffffu;
 std::uint64_t cell_of(std::uint64_t entry) { return entry >> kCellShift; }
 FaceIndex face_of(std::uint64_t entry) { return static_cast<FaceIndex>(entry & kFaceMask); }
 bool pair_is_met_here(std::uint64_t a, std::uint64_t b) { return (((a | b) >> kFirstShift) & 7) == 7; }
-
-// Sorts entries by their cell, keeping the face order within a cell, which they were made in: two stable
-// counting passes of 15 bits — linear, where a comparison sort was the finder's largest cost.
-void sort_by_cell(std::vector<std::uint64_t>& entries, std::vector<std::uint64_t>& buffer,
-                  std::vector<std::uint32_t>& counts) {
-  buffer.resize(entries.size());
-  counts.resize(1u << 15);
-  for (const int shift : {kCellShift, kCellShift + 15}) {
-    std::fill(counts.begin(), counts.end(), 0u);
-    for (std::uint64_t e : entries) ++counts[(e >> shift) & 0x7fff];
-    std::uint32_t sum = 0;
-    for (std::uint32_t& c : counts) sum += std::exchange(c, sum);
-    for (std::uint64_t e : entries) buffer[counts[(e >> shift) & 0x7fff]++] = e;
-    entries.swap(buffer);
-  }
-}
-void sort_by_cell(std::vector<std::uint64_t>& entries) {
-  std::vector<std::uint64_t> buffer;
-  std::vector<std::uint32_t> counts;
-  sort_by_cell(entries, buffer, counts);
-}
 
 // Per face, what the pair tests read, in 40 bytes: its box grown by the coincidence tolerance and rounded
 // outward to floats (never smaller: what it lets through is decided in doubles after), and, for a face of
@@ -262,7 +242,7 @@ class Finder {
                       << kCellShift |
                   f;
     }
-    sort_by_cell(ranked);
+    sort_by_30_bits(ranked, kCellShift);  // by cell, the face order kept within one
     // Per rank: the face's FaceInfo and the cells its grown box covers.
     struct Cells {
       std::uint16_t lo[3], hi[3];
@@ -332,7 +312,7 @@ class Finder {
               entries.push_back(cell_key(x, y, z) << kCellShift | first << kFirstShift | r);
             }
       }
-      sort_by_cell(entries, room.sort_buffer, room.sort_counts);
+      sort_by_30_bits(entries, kCellShift, room.sort_buffer, room.sort_counts);
       std::vector<CellFace>& local = room.local;
       for (std::size_t i = 0; i < entries.size();) {
         const std::uint64_t at = cell_of(entries[i]);
