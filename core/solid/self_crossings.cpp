@@ -4,7 +4,9 @@
 // each pair is then rejected cheaply by its planes or solved exactly as two solids' faces are. Faces that
 // share an edge meet along it and nowhere else; faces that share one vertex may still pass through each
 // other from that vertex on (a fold through a fan, two sheets welded at a point), which for triangles is
-// decided by exact orientation predicates (corner_crossing).
+// decided by exact orientation predicates (corner_crossing). Faces of one patch certified to project one to
+// one (embedded_patches.hpp) cannot cross, and their pairs are not tested at all: on a smooth scan, nearly
+// every pair the grid meets and every fan but those on the patches' borders.
 #include <tbb/enumerable_thread_specific.h>
 
 #include <algorithm>
@@ -19,6 +21,7 @@
 #include "core/geometry/exact_predicates.hpp"
 #include "core/geometry/float_bounds.hpp"
 #include "core/parallel.hpp"
+#include "core/solid/embedded_patches.hpp"
 #include "core/solid/face_crossing.hpp"
 #include "core/solid/solid.hpp"
 #include "core/tolerance.hpp"
@@ -59,11 +62,12 @@ struct CellFace {
   FaceInfo info;
   FaceIndex face;
   std::uint32_t first;  // the entry's flags: on which axes the cell is the face's first
+  std::uint32_t patch;  // embedded_patches.hpp: faces of one patch do not cross
 };
 
 class Finder {
  public:
-  explicit Finder(const Solid& solid) : solid_(solid) {
+  explicit Finder(const Solid& solid, bool use_patches) : solid_(solid) {
     double extent = 0;
     for (Point3 p : solid.vertices) extent = std::max({extent, std::abs(p.x), std::abs(p.y), std::abs(p.z)});
     tol_ = Tolerance::for_extent(extent).length;
@@ -94,6 +98,9 @@ class Finder {
         }
       }
     });
+    // Patches certified not to cross themselves spare the search nearly every pair the grid meets on a
+    // smooth surface (a scan's faces sit in cells with their neighbours).
+    if (use_patches) patch_ = embedded_patches(solid);
     for (std::size_t f = 0; f < n; ++f) {
       if (info_[f].small()) continue;
       // Sorted once: a large face meets many neighbours.
@@ -115,6 +122,7 @@ class Finder {
   // Examines one pair of faces; appends what crosses.
   void pair(FaceIndex a, FaceIndex b, Part& part) const {
     if (a > b) std::swap(a, b);
+    if (same_patch(a, b)) return;
     const FaceInfo& ia = info_[a];
     const FaceInfo& ib = info_[b];
     if (!ia.overlaps(ib)) return;
@@ -152,10 +160,23 @@ class Finder {
   // round its vertices). Vertices are shared out over the cores.
   std::vector<SelfCrossing> fan_pairs() const {
     const std::size_t nv = solid_.vertices.size(), nf = info_.size();
+    // Only vertices where triangles of more than one patch (or of none) meet have pairs to test: round
+    // any other, every pair lies in one patch.
+    constexpr std::uint32_t kUnseen = kNoPatch - 1;
+    std::vector<std::uint32_t> meeting(nv, patch_.empty() ? kNoPatch : kUnseen);  // one patch, or kNoPatch
+    if (!patch_.empty())
+      for (std::size_t f = 0; f < nf; ++f)
+        if (is_triangle(static_cast<FaceIndex>(f)))
+          for (int k = 0; k < 3; ++k) {
+            std::uint32_t& at = meeting[info_[f].v[k]];
+            at = at == kUnseen || at == patch_[f] ? patch_[f] : kNoPatch;
+          }
+    auto tested = [&](VertexIndex v) { return meeting[v] == kNoPatch; };
     std::vector<std::uint32_t> first(nv + 1, 0);
     for (std::size_t f = 0; f < nf; ++f)
       if (is_triangle(static_cast<FaceIndex>(f)))
-        for (int k = 0; k < 3; ++k) ++first[info_[f].v[k] + 1];
+        for (int k = 0; k < 3; ++k)
+          if (tested(info_[f].v[k])) ++first[info_[f].v[k] + 1];
     for (std::size_t v = 0; v < nv; ++v) first[v + 1] += first[v];
     std::vector<Corner> corners(first[nv]);
     {
@@ -164,7 +185,8 @@ class Finder {
         if (!is_triangle(static_cast<FaceIndex>(f))) continue;
         const VertexIndex* ring = info_[f].v;
         for (int k = 0; k < 3; ++k)
-          corners[fill[ring[k]]++] = {static_cast<FaceIndex>(f), ring[(k + 1) % 3], ring[(k + 2) % 3]};
+          if (tested(ring[k]))
+            corners[fill[ring[k]]++] = {static_cast<FaceIndex>(f), ring[(k + 1) % 3], ring[(k + 2) % 3]};
       }
     }
     // Two triangles whose points (other than V) lie farther than this beyond each other's planes, measured
@@ -199,7 +221,8 @@ class Finder {
           for (std::size_t j = i + 1; j < round.size(); ++j) {
             const Corner &x = *round[i].corner, &y = *round[j].corner;
             // Triangles sharing a second vertex share an edge: they meet along it, not across.
-            if (x.i1 == y.i1 || x.i1 == y.i2 || x.i2 == y.i1 || x.i2 == y.i2) continue;
+            if (x.i1 == y.i1 || x.i1 == y.i2 || x.i2 == y.i1 || x.i2 == y.i2 || same_patch(x.face, y.face))
+              continue;
             if (beyond(round[j], round[i]) || beyond(round[i], round[j])) continue;
             corner_crossing(fan_triangle(x), fan_triangle(y), V, part);
           }
@@ -327,12 +350,13 @@ class Finder {
           sweep_cell(room.cell, [&](std::uint64_t a, std::uint64_t b) {
             if (pair_is_met_here(a, b)) pair(face_of(a), face_of(b), part);
           });
-        } else {
+        } else if (!cell_in_one_patch(entries, i, end, face_at)) {
           local.clear();
           for (std::size_t p = i; p < end; ++p) {
             const std::size_t rank = face_of(entries[p]);
-            local.push_back(
-                {cell_faces[rank], face_at[rank], static_cast<std::uint32_t>(entries[p] >> kFirstShift) & 7});
+            local.push_back({cell_faces[rank], face_at[rank],
+                             static_cast<std::uint32_t>(entries[p] >> kFirstShift) & 7,
+                             patch_of(face_at[rank])});
           }
           for (std::size_t p = 0; p < local.size(); ++p)
             for (std::size_t q = p + 1; q < local.size(); ++q)
@@ -392,7 +416,8 @@ class Finder {
   // met in this cell (of those the two share), their boxes overlap, and, between faces of up to four
   // vertices, they share no edge and are not two triangles at one vertex (fan_pairs takes those).
   static bool may_cross(const CellFace& cell_a, const CellFace& cell_b) {
-    if ((cell_a.first | cell_b.first) != 7) return false;
+    if ((cell_a.first | cell_b.first) != 7 || (cell_a.patch == cell_b.patch && cell_a.patch != kNoPatch))
+      return false;
     const FaceInfo &a = cell_a.info, &b = cell_b.info;
     if (!a.overlaps(b)) return false;
     if (!a.small() || !b.small()) return true;
@@ -400,6 +425,23 @@ class Finder {
     if (shared >= 2) return false;
     const bool triangles = a.v[3] == a.v[0] && b.v[3] == b.v[0];
     return !(shared == 1 && triangles);
+  }
+
+  std::uint32_t patch_of(FaceIndex f) const {
+    return patch_.empty() ? kNoPatch : patch_[static_cast<std::size_t>(f)];
+  }
+  bool same_patch(FaceIndex a, FaceIndex b) const {
+    const std::uint32_t p = patch_of(a);
+    return p != kNoPatch && p == patch_of(b);
+  }
+  // Whether the faces of entries [begin, end) (ranks, face_at naming their faces) all lie in one patch.
+  bool cell_in_one_patch(const std::vector<std::uint64_t>& entries, std::size_t begin, std::size_t end,
+                         const std::vector<FaceIndex>& face_at) const {
+    const std::uint32_t p = patch_of(face_at[face_of(entries[begin])]);
+    if (p == kNoPatch) return false;
+    for (std::size_t i = begin + 1; i < end; ++i)
+      if (patch_of(face_at[face_of(entries[i])]) != p) return false;
+    return true;
   }
 
   // A triangle's fourth slot repeats its first vertex (a quad's holds its own fourth).
@@ -521,12 +563,14 @@ class Finder {
   std::vector<FaceInfo> info_;
   std::vector<double> warp_;                   // per face: the farthest of its vertices from its plane
   std::vector<std::vector<VertexIndex>> big_;  // the vertices of each face of more than four, sorted
+  std::vector<std::uint32_t> patch_;           // per face (embedded_patches.hpp); empty: none used
 };
 
 std::vector<SelfCrossing> find_self_crossings(const Solid& solid) {
   // Two faces at least (two triangles may cross through their one shared vertex).
   if (solid.faces.size() < 2 || solid.planes.size() != solid.faces.size()) return {};
-  Finder finder(solid);
+  // Below a few dozen faces every pair is cheaper than certifying patches too.
+  Finder finder(solid, solid.faces.size() > 48);
   // Below a few dozen faces every pair is cheaper than building the grid.
   std::vector<SelfCrossing> found = solid.faces.size() <= 48 ? finder.all_pairs() : finder.grid_pairs();
   const std::vector<SelfCrossing> at_vertices = finder.fan_pairs();
