@@ -111,13 +111,21 @@ struct Worker {
       __builtin_prefetch(&setup.ring_ends[o.first_ring]);
       near[kept++] = id;
     }
-    face_tests += kept;
     covers.clear();
+    double added = 0;  // the lengths of the hidden intervals added, overlaps counted twice
     for (std::size_t k = 0; k < kept; ++k) {
       const Occluder& o = setup.occluders[near[k]];
       const std::size_t before = hidden.items().size();
       add_hidden_intervals(setup, camera, c, o, scratch, hidden);
-      if (!count_levels) continue;
+      ++face_tests;
+      if (!count_levels) {
+        // Hidden whole, the edge stays hidden whole: the faces left cannot change what is drawn (only
+        // level counts need every cover). They can cover [0, 1] only once their lengths add up to it.
+        for (std::size_t i = before; i < hidden.items().size(); ++i)
+          added += hidden.items()[i].hi - hidden.items()[i].lo;
+        if (added >= 1 && hidden.covers_all()) break;
+        continue;
+      }
       const int surfaces =
           setup.cull[o.object] ? 2 : 1;  // a culled solid's front face and the back behind it
       for (std::size_t i = before; i < hidden.items().size(); ++i)
