@@ -133,10 +133,39 @@ bool first_crossing(const Polygon2& a, const Polygon2& b, double tolerance, std:
   return false;
 }
 
+// The common face — one loop of three distinct vertices — as prepare_face would leave it, by the same
+// functions in the same order (the same bits): it needs none of the cleaning, splitting and hole checks.
+// False, touching nothing the general path does not set again, when its area is too small: the general
+// path then reports it.
+bool prepare_triangle(FaceWork& work, VertexIndex a, VertexIndex b, VertexIndex c,
+                      const std::vector<Point3>& pos) {
+  work.rings.clear();
+  work.rings.push_back(Ring{SmallVector<VertexIndex, 4>{a, b, c}, {}});
+  const Ring& ring = work.rings[0];
+  const Vector3 normal = newell_normal(pos, ring);
+  Point3 lo = pos[a], hi = pos[a];
+  for (const VertexIndex v : {a, b, c}) {
+    lo = {std::min(lo.x, pos[v].x), std::min(lo.y, pos[v].y), std::min(lo.z, pos[v].z)};
+    hi = {std::max(hi.x, pos[v].x), std::max(hi.y, pos[v].y), std::max(hi.z, pos[v].z)};
+  }
+  const double size = distance(lo, hi);
+  if (length(normal) <= Tolerance::for_extent(size).length * size) return false;
+  work.lines.clear();
+  work.rings_are_loops = true;
+  work.size = size;
+  work.plane = newell_plane(pos, ring, normal);
+  work.area = normal;
+  return true;
+}
+
 }  // namespace
 
 bool prepare_face(FaceWork& work, bool from_loop, int number, std::int64_t tag, const VertexTable& vertices,
                   const SolidBuildOptions& options, Diagnostics& diagnostics) {
+  if (work.loops.size() == 1 && work.loops.ends[0] == 3) {
+    const VertexIndex a = work.loops.vertices[0], b = work.loops.vertices[1], c = work.loops.vertices[2];
+    if (a != b && b != c && c != a && prepare_triangle(work, a, b, c, vertices.positions())) return true;
+  }
   // Names are made only for messages: most faces have none.
   auto name = [&] { return "face " + std::to_string(number); };
   auto ring_name = [&](std::size_t k) {
