@@ -30,6 +30,12 @@ void keep_freed_memory() {
   mallopt(M_MMAP_THRESHOLD, kLargestMmapThreshold);
   mallopt(M_TRIM_THRESHOLD, kNeverTrim);
   mallopt(M_TOP_PAD, kTopPad);
+  // One arena for every thread: what the import frees on one thread is reused by the frame's parts on
+  // another, where each thread's own arena took fresh pages for them (and kept its own partly used huge
+  // pages). The bunny's run 78 → 52 MB; the 10⁶-triangle torus 637 → 447 MB and 1.8 → 1.1 s, its system
+  // time 771 → 75 ms. The engine allocates little inside its parallel loops (some 11 000 blocks a bunny
+  // frame, the small ones from each thread's cache), so the shared lock costs nothing measurable.
+  mallopt(M_ARENA_MAX, 1);
 #endif
 }
 

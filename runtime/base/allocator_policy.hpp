@@ -8,7 +8,8 @@ namespace hlr::runtime {
 // lists, grids and pen graphs then come back as fresh pages, and first touches of fresh pages are what a
 // frame spends most of its system time on (the 100k-face turntable: 0.9 of 4.7 s). Blocks up to 32 MiB
 // (glibc's largest threshold) now come from the heap and freed memory stays there; peak memory grows by
-// about a tenth. A no-op where the C library is not glibc.
+// about a tenth. All threads share one arena, so that memory freed on one is reused on another. A no-op
+// where the C library is not glibc.
 void keep_freed_memory();
 
 // Call first thing in main(). Puts the heap on transparent huge pages: glibc reads its tunables only when
