@@ -1,6 +1,7 @@
 #include "core/solid/embedded_patches.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <utility>
 
@@ -36,8 +37,9 @@ constexpr FaceIndex kBadFace = -2;
 struct Triangle {
   VertexIndex v[3];
   FaceIndex across[3];
-  std::uint8_t cones = 0;  // bit 2·axis + (normal along −axis): grows a patch of that axis and side
-  bool usable = false;     // one ring of three vertices, its edges linked
+  std::uint8_t cones = 0;    // bit 2·axis + (normal along −axis): grows a patch of that axis and side
+  std::uint8_t nearest = 0;  // the bit of the axis and side its normal lies nearest: a seed's patch's
+  bool usable = false;       // one ring of three vertices, its edges linked
 };
 
 Triangle triangle_of(const Solid& solid, FaceIndex f) {
@@ -54,10 +56,13 @@ Triangle triangle_of(const Solid& solid, FaceIndex f) {
   }
   const Vector3 n = solid.planes[static_cast<std::size_t>(f)].normal;
   const double along[3] = {n.x, n.y, n.z};
+  int axis = 0;
   for (int a = 0; a < 3; ++a) {
     if (along[a] > kGrowCosine) t.cones |= static_cast<std::uint8_t>(1u << (2 * a));
     if (along[a] < -kGrowCosine) t.cones |= static_cast<std::uint8_t>(1u << (2 * a + 1));
+    if (std::abs(along[a]) > std::abs(along[axis])) axis = a;
   }
+  t.nearest = static_cast<std::uint8_t>(1u << (2 * axis + (along[axis] < 0 ? 1 : 0)));
   t.usable = true;
   return t;
 }
@@ -88,12 +93,12 @@ struct Scratch {
   };
   std::vector<Border> border;
   std::vector<std::uint32_t> next, order;
+  std::vector<char> walked;
   std::vector<Point2> from, to;
 };
 
-// The certificate of embedded_patches.hpp for triangles `faces` along `axis`; in_patch(g) tells whether
-// face g is one of them.
-// tri(f) gives face f's Triangle.
+// The certificate of embedded_patches.hpp for triangles `faces` along `axis`: tri(f) gives face f's
+// Triangle, in_patch(g) whether face g is one of them.
 template <typename Tri, typename InPatch>
 bool certify(const Solid& solid, std::span<const FaceIndex> faces, int axis, const Tri& tri,
              const InPatch& in_patch, Scratch& s) {
@@ -154,14 +159,14 @@ bool certify(const Solid& solid, std::span<const FaceIndex> faces, int axis, con
   // Disjoint simple loops cover the plane once inside each: the triangles cover a point at most once when
   // exactly one loop turns as they do (the outline) and every other the other way (holes). A loop's turn
   // is that at its lowest point (least x, then y), a corner where it cannot run straight on.
-  s.order.assign(n, 0);  // 1: edge already walked
+  s.walked.assign(n, 0);
   int outlines = 0;
   for (std::size_t start = 0; start < n; ++start) {
-    if (s.order[start] != 0) continue;
+    if (s.walked[start]) continue;
     std::size_t low = start, at = start;
     std::size_t steps = 0;
     do {
-      s.order[at] = 1;
+      s.walked[at] = 1;
       const Point2 p = s.to[at], q = s.to[low];
       if (p.x < q.x || (p.x == q.x && p.y < q.y)) low = at;
       at = s.next[at];
@@ -229,17 +234,12 @@ std::vector<std::uint32_t> embedded_patches(const Solid& solid) {
     for (std::size_t seed = lo; seed < hi; ++seed) {
       if (patch[seed] != kUnassigned) continue;
       const Triangle& t = triangles[seed - lo];
-      if (!t.usable || t.cones == 0) {
+      if (!t.usable || (t.cones & t.nearest) == 0) {  // no normal to speak of
         patch[seed] = kNoPatch;
         continue;
       }
-      // The axis the seed's normal lies nearest, and its side.
-      const Vector3 normal = solid.planes[seed].normal;
-      const double along[3] = {normal.x, normal.y, normal.z};
-      int axis = 0;
-      for (int a = 1; a < 3; ++a)
-        if (std::abs(along[a]) > std::abs(along[axis])) axis = a;
-      const auto cone = static_cast<std::uint8_t>(1u << (2 * axis + (along[axis] < 0 ? 1 : 0)));
+      const std::uint8_t cone = t.nearest;  // the patch grows along the axis the seed's normal lies nearest
+      const int axis = std::countr_zero(cone) / 2;
       const auto id = static_cast<std::uint32_t>(seed);
       // The largest patch round the seed that is certified: a patch that fails (a fold, an ear seen edge
       // on) is grown again smaller.

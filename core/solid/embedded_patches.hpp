@@ -6,11 +6,12 @@
 // The certificate, for a set P of triangles and an axis: (1) every triangle of P projects along the axis
 // with the same strict orientation (exact orient2d on the two other coordinates, which projection does not
 // round); (2) every edge two triangles of P share is run in opposite directions by them; (3) the edges of P
-// shared with no other triangle of P form one closed loop whose projection is a simple polygon (exact
-// segment tests). The projected triangles then cover each point of the plane (off their outlines) as many
-// times as the loop winds round it — the chain's boundary is the loop, and every triangle counts +1 — which
-// a simple polygon does at most once: no two triangles' projections overlap, so no two triangles share a
-// point off their outlines, and none cross. Faces that fail stay outside every patch and are searched as
+// shared with no other triangle of P form closed loops whose projections are simple and disjoint (exact
+// segment tests), exactly one of them turning as the triangles do (the outline) and every other the other
+// way (holes). The projected triangles then cover each point of the plane (off their outlines) as many
+// times as the loops wind round it, summed — the chain's boundary is the loops, and every triangle counts
+// +1 — which such loops do at most once: no two triangles' projections overlap, so no two triangles share
+// a point off their outlines, and none cross. Faces that fail stay outside every patch and are searched as
 // before; the certificate is never needed to find a crossing, only to skip a pair that has none.
 #pragma once
 

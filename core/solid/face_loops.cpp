@@ -133,6 +133,21 @@ bool first_crossing(const Polygon2& a, const Polygon2& b, double tolerance, std:
   return false;
 }
 
+// The diagonal of the bounding box of the vertices a face names: the scale of its tolerances.
+double face_extent(const std::vector<Point3>& pos, std::span<const VertexIndex> named) {
+  Point3 lo = pos[named[0]], hi = pos[named[0]];
+  for (VertexIndex v : named) {
+    lo = {std::min(lo.x, pos[v].x), std::min(lo.y, pos[v].y), std::min(lo.z, pos[v].z)};
+    hi = {std::max(hi.x, pos[v].x), std::max(hi.y, pos[v].y), std::max(hi.z, pos[v].z)};
+  }
+  return distance(lo, hi);
+}
+
+// Twice the area against the size squared: below kRelative, the normal is rounding noise.
+bool has_area(double twice_area, double face_size) {
+  return !(twice_area <= Tolerance::for_extent(face_size).length * face_size);
+}
+
 // The common face — one loop of three distinct vertices — as prepare_face would leave it, by the same
 // functions in the same order (the same bits): it needs none of the cleaning, splitting and hole checks.
 // False, touching nothing the general path does not set again, when its area is too small: the general
@@ -143,13 +158,8 @@ bool prepare_triangle(FaceWork& work, VertexIndex a, VertexIndex b, VertexIndex 
   work.rings.push_back(Ring{SmallVector<VertexIndex, 4>{a, b, c}, {}});
   const Ring& ring = work.rings[0];
   const Vector3 normal = newell_normal(pos, ring);
-  Point3 lo = pos[a], hi = pos[a];
-  for (const VertexIndex v : {a, b, c}) {
-    lo = {std::min(lo.x, pos[v].x), std::min(lo.y, pos[v].y), std::min(lo.z, pos[v].z)};
-    hi = {std::max(hi.x, pos[v].x), std::max(hi.y, pos[v].y), std::max(hi.z, pos[v].z)};
-  }
-  const double size = distance(lo, hi);
-  if (length(normal) <= Tolerance::for_extent(size).length * size) return false;
+  const double size = face_extent(pos, std::span<const VertexIndex>(ring.vertices.data(), 3));
+  if (!has_area(length(normal), size)) return false;
   work.lines.clear();
   work.rings_are_loops = true;
   work.size = size;
@@ -276,16 +286,9 @@ bool prepare_face(FaceWork& work, bool from_loop, int number, std::int64_t tag, 
   const std::span<const VertexIndex> named =
       gathered.empty() ? std::span<const VertexIndex>(rings[0].vertices.data(), rings[0].vertices.size())
                        : std::span<const VertexIndex>(gathered);
-  Point3 lo = pos[named[0]], hi = pos[named[0]];
-  for (VertexIndex v : named) {
-    lo = {std::min(lo.x, pos[v].x), std::min(lo.y, pos[v].y), std::min(lo.z, pos[v].z)};
-    hi = {std::max(hi.x, pos[v].x), std::max(hi.y, pos[v].y), std::max(hi.z, pos[v].z)};
-  }
-  const double face_size = distance(lo, hi);
+  const double face_size = face_extent(pos, named);
   work.size = face_size;
-  // Twice the area against the size squared: below kRelative, the normal is rounding noise.
-  const double area_floor = Tolerance::for_extent(face_size).length * face_size;
-  if (twice_area[0] <= area_floor) {
+  if (!has_area(twice_area[0], face_size)) {
     diagnostics.error("zero-area", name() + " has zero area", tag);
     return false;
   }
@@ -345,7 +348,7 @@ bool prepare_face(FaceWork& work, bool from_loop, int number, std::int64_t tag, 
       }
     };
     for (std::size_t k = 1; k < rings.size(); ++k) {
-      if (twice_area[k] <= area_floor) {
+      if (!has_area(twice_area[k], face_size)) {
         diagnostics.error("zero-area", ring_name(k) + " has zero area", tag);
         holes_ok = false;
         continue;
