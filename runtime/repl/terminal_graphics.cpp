@@ -183,35 +183,35 @@ void add_segments(cairo_t* cr, const std::vector<VisibleSegment>& segments, cons
     const auto range = clip_segment_to_rect(a, b, bounds);
     if (!range) continue;
     const double dx = b.x - a.x, dy = b.y - a.y;
-    cairo_move_to(cr, a.x + range->first * dx, a.y + range->first * dy);
-    cairo_line_to(cr, a.x + range->second * dx, a.y + range->second * dy);
+    cairo_library().cairo_move_to(cr, a.x + range->first * dx, a.y + range->first * dy);
+    cairo_library().cairo_line_to(cr, a.x + range->second * dx, a.y + range->second * dy);
   }
 }
 
 // Sixel wants hard pixels; the PNG may be smooth.
 void draw(cairo_surface_t* surface, const std::vector<VisibleSegment>& segments,
           const std::optional<Rect2>& frame, int width, int height, bool antialias) {
-  CairoContext cr{cairo_create(surface)};
-  cairo_set_source_rgb(cr.p, 1, 1, 1);
-  cairo_paint(cr.p);
+  CairoContext cr{cairo_library().cairo_create(surface)};
+  cairo_library().cairo_set_source_rgb(cr.p, 1, 1, 1);
+  cairo_library().cairo_paint(cr.p);
   const PictureFit fit = fit_picture(segments, frame, width - 2 * kMarginPx, height - 2 * kMarginPx);
   if (!fit.box.empty()) {
-    cairo_translate(cr.p, kMarginPx, kMarginPx);
-    cairo_set_antialias(cr.p, antialias ? CAIRO_ANTIALIAS_DEFAULT : CAIRO_ANTIALIAS_NONE);
-    cairo_set_line_width(cr.p, kLineWidthPx);
-    cairo_set_line_cap(cr.p, CAIRO_LINE_CAP_ROUND);
+    cairo_library().cairo_translate(cr.p, kMarginPx, kMarginPx);
+    cairo_library().cairo_set_antialias(cr.p, antialias ? CAIRO_ANTIALIAS_DEFAULT : CAIRO_ANTIALIAS_NONE);
+    cairo_library().cairo_set_line_width(cr.p, kLineWidthPx);
+    cairo_library().cairo_set_line_cap(cr.p, CAIRO_LINE_CAP_ROUND);
     // Hidden first, so that visible lines win where they cross.
-    cairo_set_source_rgb(cr.p, kHiddenGrey, kHiddenGrey, kHiddenGrey);
-    cairo_set_dash(cr.p, kHiddenDash, static_cast<int>(std::size(kHiddenDash)), 0);
+    cairo_library().cairo_set_source_rgb(cr.p, kHiddenGrey, kHiddenGrey, kHiddenGrey);
+    cairo_library().cairo_set_dash(cr.p, kHiddenDash, static_cast<int>(std::size(kHiddenDash)), 0);
     add_segments(cr.p, segments, fit, true, width, height);
-    cairo_stroke(cr.p);
-    cairo_set_source_rgb(cr.p, 0, 0, 0);
-    cairo_set_dash(cr.p, nullptr, 0, 0);
+    cairo_library().cairo_stroke(cr.p);
+    cairo_library().cairo_set_source_rgb(cr.p, 0, 0, 0);
+    cairo_library().cairo_set_dash(cr.p, nullptr, 0, 0);
     add_segments(cr.p, segments, fit, false, width, height);
-    cairo_stroke(cr.p);
+    cairo_library().cairo_stroke(cr.p);
   }
-  check_cairo(cairo_status(cr.p));
-  cairo_surface_flush(surface);
+  check_cairo(cairo_library().cairo_status(cr.p));
+  cairo_library().cairo_surface_flush(surface);
 }
 
 constexpr char kBase64Alphabet[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
@@ -246,11 +246,11 @@ constexpr std::size_t kKittyChunk = 4096;
 
 std::string kitty_image(const std::vector<VisibleSegment>& segments, const std::optional<Rect2>& frame,
                         int width, int height) {
-  CairoSurface surface{cairo_image_surface_create(CAIRO_FORMAT_RGB24, width, height)};
-  check_cairo(cairo_surface_status(surface.p));
+  CairoSurface surface{cairo_library().cairo_image_surface_create(CAIRO_FORMAT_RGB24, width, height)};
+  check_cairo(cairo_library().cairo_surface_status(surface.p));
   draw(surface.p, segments, frame, width, height, true);
   std::string png;
-  check_cairo(cairo_surface_write_to_png_stream(surface.p, append_to_string, &png));
+  check_cairo(cairo_library().cairo_surface_write_to_png_stream(surface.p, append_to_string, &png));
   const std::string data = base64(png);
   std::string out;
   for (std::size_t at = 0; at < data.size(); at += kKittyChunk) {
@@ -284,11 +284,11 @@ void put_run(std::string& out, char c, int n) {
 
 std::string sixel_image(const std::vector<VisibleSegment>& segments, const std::optional<Rect2>& frame,
                         int width, int height) {
-  CairoSurface surface{cairo_image_surface_create(CAIRO_FORMAT_RGB24, width, height)};
-  check_cairo(cairo_surface_status(surface.p));
+  CairoSurface surface{cairo_library().cairo_image_surface_create(CAIRO_FORMAT_RGB24, width, height)};
+  check_cairo(cairo_library().cairo_surface_status(surface.p));
   draw(surface.p, segments, frame, width, height, false);
-  const unsigned char* data = cairo_image_surface_get_data(surface.p);
-  const int stride = cairo_image_surface_get_stride(surface.p);
+  const unsigned char* data = cairo_library().cairo_image_surface_get_data(surface.p);
+  const int stride = cairo_library().cairo_image_surface_get_stride(surface.p);
   auto ink = [&](int x, int y) {  // RGB24: one native-endian 32-bit word per pixel, green in bits 8–15
     std::uint32_t px;
     std::copy_n(data + static_cast<std::ptrdiff_t>(y) * stride +

@@ -65,8 +65,8 @@ void validate(const std::vector<PlotPage>& pages, const CairoOptions& o) {
 // becomes several subpaths.
 void add_stroke(cairo_t* cr, const PlotStroke& stroke, const Rect2& box) {
   clip_polyline_to_rect(
-      stroke.points, box, [&](Point2 p) { cairo_move_to(cr, p.x, p.y); },
-      [&](Point2 p) { cairo_line_to(cr, p.x, p.y); });
+      stroke.points, box, [&](Point2 p) { cairo_library().cairo_move_to(cr, p.x, p.y); },
+      [&](Point2 p) { cairo_library().cairo_line_to(cr, p.x, p.y); });
 }
 
 // The caption as valid UTF-8 (cairo fails the whole surface on a bad string): bad bytes become '?'.
@@ -87,26 +87,27 @@ std::string valid_utf8(const std::string& s) {
 // A grey of level `g` (0 black, 1 white): as a colour, or on an alpha-only surface as ink of 1 − g.
 void set_grey_or_colour(cairo_t* cr, double r, double g, double b, bool ink) {
   if (ink)
-    cairo_set_source_rgba(cr, 0, 0, 0, 1 - g);
+    cairo_library().cairo_set_source_rgba(cr, 0, 0, 0, 1 - g);
   else
-    cairo_set_source_rgb(cr, r, g, b);
+    cairo_library().cairo_set_source_rgb(cr, r, g, b);
 }
 
 // Draws one page on a context whose user unit is `units_per_mm` device units, then leaves the context
 // as it found it. With `ink` the surface is alpha-only and every colour is a grey (see png_bytes).
 void draw_page(cairo_t* cr, const PlotPage& page, const CairoOptions& o, double units_per_mm, bool ink) {
-  const bool raster = cairo_surface_get_type(cairo_get_target(cr)) == CAIRO_SURFACE_TYPE_IMAGE;
-  cairo_save(cr);
-  cairo_scale(cr, units_per_mm, units_per_mm);
-  cairo_set_line_cap(cr, CAIRO_LINE_CAP_ROUND);
-  cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
+  const bool raster = cairo_library().cairo_surface_get_type(cairo_library().cairo_get_target(cr)) ==
+                      CAIRO_SURFACE_TYPE_IMAGE;
+  cairo_library().cairo_save(cr);
+  cairo_library().cairo_scale(cr, units_per_mm, units_per_mm);
+  cairo_library().cairo_set_line_cap(cr, CAIRO_LINE_CAP_ROUND);
+  cairo_library().cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
 
   if (o.decorations && page.border && !page.border->empty()) {
     const Rect2& b = *page.border;
     set_grey_or_colour(cr, kBorderGrey, kBorderGrey, kBorderGrey, ink);
-    cairo_set_line_width(cr, 0.5 * o.pens.default_width_mm());
-    cairo_rectangle(cr, b.xmin, b.ymin, b.width(), b.height());
-    cairo_stroke(cr);
+    cairo_library().cairo_set_line_width(cr, 0.5 * o.pens.default_width_mm());
+    cairo_library().cairo_rectangle(cr, b.xmin, b.ymin, b.width(), b.height());
+    cairo_library().cairo_stroke(cr);
   }
 
   const Rect2 box = stroke_clip_box(page, o.pens);
@@ -117,31 +118,32 @@ void draw_page(cairo_t* cr, const PlotPage& page, const CairoOptions& o, double 
         // cairo's 4 × 4-sample coverage takes a third of the time of its 256 levels
         // (bench/README.md, "PNG"); on a line a pixel wide or more no eye tells them
         // apart, on thinner ones its 16 steps show as bands.
-        cairo_set_antialias(cr, raster && style.width_mm * units_per_mm >= kFastAntialiasMinPixels
-                                    ? CAIRO_ANTIALIAS_FAST
-                                    : CAIRO_ANTIALIAS_DEFAULT);
-        cairo_set_line_width(cr, style.width_mm);
+        cairo_library().cairo_set_antialias(
+            cr, raster && style.width_mm * units_per_mm >= kFastAntialiasMinPixels ? CAIRO_ANTIALIAS_FAST
+                                                                                   : CAIRO_ANTIALIAS_DEFAULT);
+        cairo_library().cairo_set_line_width(cr, style.width_mm);
         if (layer == StrokeLayer::Hidden) {
           const double dash[] = {dash_on_mm(style.width_mm, level), dash_off_mm(style.width_mm, level)};
-          cairo_set_dash(cr, dash, 2, 0);
+          cairo_library().cairo_set_dash(cr, dash, 2, 0);
         } else {
-          cairo_set_dash(cr, nullptr, 0, 0);
+          cairo_library().cairo_set_dash(cr, nullptr, 0, 0);
         }
         for (std::size_t i = first; i < end; ++i) add_stroke(cr, page.strokes[i], box);
-        cairo_stroke(cr);
+        cairo_library().cairo_stroke(cr);
       });
-  cairo_set_dash(cr, nullptr, 0, 0);
-  cairo_set_antialias(cr, CAIRO_ANTIALIAS_DEFAULT);
+  cairo_library().cairo_set_dash(cr, nullptr, 0, 0);
+  cairo_library().cairo_set_antialias(cr, CAIRO_ANTIALIAS_DEFAULT);
 
   if (o.decorations && !page.caption.empty()) {
     // In the bottom margin, so a caption never moves the drawing.
     set_grey_or_colour(cr, 0, 0, 0, ink);
-    cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
-    cairo_set_font_size(cr, kCaptionPt / kPointsPerMm);
-    cairo_move_to(cr, page.margin_mm, page.height_mm - 0.6 * page.margin_mm);
-    cairo_show_text(cr, valid_utf8(page.caption).c_str());
+    cairo_library().cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL,
+                                           CAIRO_FONT_WEIGHT_NORMAL);
+    cairo_library().cairo_set_font_size(cr, kCaptionPt / kPointsPerMm);
+    cairo_library().cairo_move_to(cr, page.margin_mm, page.height_mm - 0.6 * page.margin_mm);
+    cairo_library().cairo_show_text(cr, valid_utf8(page.caption).c_str());
   }
-  cairo_restore(cr);
+  cairo_library().cairo_restore(cr);
 }
 
 // Draws every page on `surface` (one show_page each), finishes it and throws on any cairo error.
@@ -149,19 +151,19 @@ void draw_page(cairo_t* cr, const PlotPage& page, const CairoOptions& o, double 
 template <typename BeforePage>
 void draw_all(cairo_surface_t* surface, std::span<const PlotPage> pages, const CairoOptions& o,
               double units_per_mm, BeforePage before_page, bool ink = false) {
-  check_cairo(cairo_surface_status(surface));
+  check_cairo(cairo_library().cairo_surface_status(surface));
   {
-    CairoContext cr{cairo_create(surface)};
+    CairoContext cr{cairo_library().cairo_create(surface)};
     for (const PlotPage& page : pages) {
       before_page(cr.p, page);
       draw_page(cr.p, page, o, units_per_mm, ink);
-      if (o.format != CairoFormat::Png) cairo_show_page(cr.p);
+      if (o.format != CairoFormat::Png) cairo_library().cairo_show_page(cr.p);
     }
-    check_cairo(cairo_status(cr.p));
+    check_cairo(cairo_library().cairo_status(cr.p));
   }
   if (o.format != CairoFormat::Png) {
-    cairo_surface_finish(surface);  // writes the file's tail; errors surface here
-    check_cairo(cairo_surface_status(surface));
+    cairo_library().cairo_surface_finish(surface);  // writes the file's tail; errors surface here
+    check_cairo(cairo_library().cairo_surface_status(surface));
   }
 }
 
@@ -193,10 +195,10 @@ std::string renumber_surface_ids(const std::string& svg) {
 std::string svg_bytes(const PlotPage& page, const CairoOptions& o) {
   std::string bytes;
   // In cairo ≥ 1.16 the document unit makes the size given here millimetres and one user unit 1 mm.
-  CairoSurface surface{
-      cairo_svg_surface_create_for_stream(append_to_string, &bytes, page.width_mm, page.height_mm)};
-  check_cairo(cairo_surface_status(surface.p));
-  cairo_svg_surface_set_document_unit(surface.p, CAIRO_SVG_UNIT_MM);
+  CairoSurface surface{cairo_library().cairo_svg_surface_create_for_stream(append_to_string, &bytes,
+                                                                           page.width_mm, page.height_mm)};
+  check_cairo(cairo_library().cairo_surface_status(surface.p));
+  cairo_library().cairo_svg_surface_set_document_unit(surface.p, CAIRO_SVG_UNIT_MM);
   draw_all(surface.p, std::span(&page, 1), o, 1, [](cairo_t*, const PlotPage&) {});
   return renumber_surface_ids(bytes);
 }
@@ -226,26 +228,26 @@ std::string png_bytes(const PlotPage& page, const CairoOptions& o) {
   const cairo_format_t format = grey                 ? CAIRO_FORMAT_A8
                                 : o.white_background ? CAIRO_FORMAT_RGB24
                                                      : CAIRO_FORMAT_ARGB32;
-  CairoSurface surface{
-      cairo_image_surface_create(format, static_cast<int>(size.width), static_cast<int>(size.height))};
+  CairoSurface surface{cairo_library().cairo_image_surface_create(format, static_cast<int>(size.width),
+                                                                  static_cast<int>(size.height))};
   draw_all(
       surface.p, std::span(&page, 1), o, o.dpi / kMmPerInch,
       [&](cairo_t* cr, const PlotPage&) {
         if (grey) {
-          cairo_set_operator(cr, CAIRO_OPERATOR_SOURCE);
+          cairo_library().cairo_set_operator(cr, CAIRO_OPERATOR_SOURCE);
           return;  // a new A8 surface holds no ink
         }
         if (!o.white_background) return;  // a new image surface is transparent
-        cairo_set_source_rgb(cr, 1, 1, 1);
-        cairo_paint(cr);
+        cairo_library().cairo_set_source_rgb(cr, 1, 1, 1);
+        cairo_library().cairo_paint(cr);
       },
       grey);
-  cairo_surface_flush(surface.p);
+  cairo_library().cairo_surface_flush(surface.p);
   PngRaster raster;
-  raster.data = cairo_image_surface_get_data(surface.p);
+  raster.data = cairo_library().cairo_image_surface_get_data(surface.p);
   raster.width = size.width;
   raster.height = size.height;
-  raster.stride = cairo_image_surface_get_stride(surface.p);
+  raster.stride = cairo_library().cairo_image_surface_get_stride(surface.p);
   raster.pixels = grey ? (o.white_background ? PngPixels::InkGrey : PngPixels::InkGreyAlpha)
                        : (o.white_background ? PngPixels::Rgb : PngPixels::Rgba);
   return encode_png(raster);
