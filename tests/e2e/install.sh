@@ -2,7 +2,8 @@
 # Install and package: `cmake --install` into a prefix, the prefix moved elsewhere, and the moved program
 # renders a script that includes a library module from any folder (it finds ../share/hlrscript/modules
 # beside itself, not the source tree); HLRSCRIPT_STDLIB still overrides. Then `cpack -G DEB`: the package
-# holds the same files under /usr and depends on the libraries the program links and the font data.
+# holds the same files under /usr and depends on the shared libraries the program links (libedit and
+# Boost's are linked in), cairo (loaded when first drawn with) and the font data.
 #   install.sh BUILD_DIR WORK
 set -uo pipefail
 build=$1
@@ -51,7 +52,7 @@ if [ -z "$deb" ]; then
   fail "no .deb written"
 else
   depends=$(dpkg-deb -f "$deb" Depends)
-  for lib in libcairo2 libtbb hershey-fonts-data libedit; do
+  for lib in libcairo2 libtbb libstdc++6 hershey-fonts-data; do
     [[ $depends == *"$lib"* ]] || fail "the package does not depend on $lib: $depends"
   done
   dpkg-deb -x "$deb" "$work/unpacked"
