@@ -5,15 +5,7 @@
 #   cairo_on_demand.sh HLRSCRIPT WORK
 set -uo pipefail
 hlrscript=$1
-work=$2
-rm -rf "$work"
-mkdir -p "$work"
-cd "$work" || exit 1
-failures=0
-fail() {
-  echo "FAIL: $*"
-  failures=$((failures + 1))
-}
+source "$(dirname "${BASH_SOURCE[0]}")/checks.sh" "$2"
 engine="$(dirname "$hlrscript")/hlrscript-engine"
 cat >scene.hls <<'HLS'
 draw box(1, 1, 1)

@@ -5,15 +5,7 @@
 #   frame_timeout.sh HLRSCRIPT WORK
 set -uo pipefail
 hlrscript=$1
-work=$2
-rm -rf "$work"
-mkdir -p "$work"
-cd "$work" || exit 1
-failures=0
-fail() {
-  echo "FAIL: $*"
-  failures=$((failures + 1))
-}
+source "$(dirname "${BASH_SOURCE[0]}")/checks.sh" "$2"
 check() {  # NAME MESSAGE LINE SCRIPT ARGS...
   local name=$1 message=$2 line=$3 text=$4
   shift 4

@@ -6,15 +6,7 @@
 set -uo pipefail
 hlrscript=$1
 source_dir=$2
-work=$3
-rm -rf "$work"
-mkdir -p "$work"
-cd "$work" || exit 1
-failures=0
-fail() {
-  echo "FAIL: $*"
-  failures=$((failures + 1))
-}
+source "$(dirname "${BASH_SOURCE[0]}")/checks.sh" "$3"
 engine="$(dirname "$hlrscript")/hlrscript-engine"
 [ -x "$engine" ] || fail "no engine beside $hlrscript"
 
