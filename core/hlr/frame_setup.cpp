@@ -575,14 +575,11 @@ void append_intersection_candidates(FrameSetup& setup, const Scene& scene, const
   FrameSetup crossings;
   add_intersection_candidates(scene, camera, setup.facing, setup.cull, setup.length_tolerance, keep_culled,
                               crossings);
-  Rect2 bounds = Rect2::none();
   crossings.candidates.resize(clip_and_project(crossings.candidates.data(), crossings.candidates.size(),
-                                               camera, setup.length_tolerance, bounds));
+                                               camera, setup.length_tolerance, setup.picture_bounds));
   if (crossings.candidates.empty()) return;
   setup.candidates.reserve(setup.candidates.size() + crossings.candidates.size());
   setup.candidates.insert(setup.candidates.end(), crossings.candidates.begin(), crossings.candidates.end());
-  setup.picture_bounds.include({bounds.xmin, bounds.ymin});
-  setup.picture_bounds.include({bounds.xmax, bounds.ymax});
 }
 
 }  // namespace hlr
