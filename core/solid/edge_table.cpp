@@ -10,22 +10,33 @@
 
 namespace hlr::solid_detail {
 
-EdgeEntries::EdgeEntries(std::size_t expected_entries)
-    : expected_(expected_entries), slots_(std::bit_ceil(std::max<std::size_t>(16, 2 * expected_entries))) {
+EdgeEntries::EdgeEntries(std::size_t expected_entries, std::size_t vertex_count)
+    : expected_(expected_entries),
+      slots_(std::bit_ceil(std::max<std::size_t>(16, 2 * expected_entries))),
+      vertex_count_(vertex_count) {
   shift_ = 64 - std::countr_zero(slots_.size());
+  set_per_vertex();
 }
 
-std::size_t EdgeEntries::slot_of(VertexIndex lo, VertexIndex hi) const {
+void EdgeEntries::set_per_vertex() {
+  // Slots below 2^32 (entries are numbered in 32 bits), so that lo · per_vertex_ fits in 64 bits.
+  per_vertex_ = vertex_count_ == 0 || slots_.size() > (std::size_t{1} << 32)
+                    ? 0
+                    : (std::uint64_t{slots_.size()} << 32) / vertex_count_;
+}
+
+std::size_t EdgeEntries::slot_of(VertexIndex lo, VertexIndex hi, std::size_t& run) const {
   const std::size_t mask = slots_.size() - 1;
-  for (std::size_t s = home(lo, hi);; s = (s + 1) & mask) {
+  for (std::size_t s = home(lo, hi);; s = (s + 1) & mask, ++run) {
     const Slot& slot = slots_[s];
     if (slot.entry == 0 || (slot.lo == lo && slot.hi == hi)) return s;
   }
 }
 
-void EdgeEntries::grow_index() {
-  slots_.assign(2 * slots_.size(), Slot{});
+void EdgeEntries::index_again(std::size_t slot_count) {
+  slots_.assign(slot_count, Slot{});
   shift_ = 64 - std::countr_zero(slots_.size());
+  if (per_vertex_ != 0) set_per_vertex();
   for (std::uint32_t e = 0; e < size_; ++e) {
     const EdgeEntry& entry = (*this)[e];
     slots_[slot_of(entry.lo, entry.hi)] = {entry.lo, entry.hi, e + 1};
@@ -34,11 +45,17 @@ void EdgeEntries::grow_index() {
 
 std::uint32_t EdgeEntries::get(VertexIndex a, VertexIndex b) {
   const VertexIndex lo = std::min(a, b), hi = std::max(a, b);
-  std::size_t s = slot_of(lo, hi);
+  std::size_t run = 0;
+  std::size_t s = slot_of(lo, hi, run);
+  if (run > kLongRun && per_vertex_ != 0) {  // crowded round a vertex: scatter from now on
+    per_vertex_ = 0;
+    index_again(slots_.size());
+    s = slot_of(lo, hi);
+  }
   if (slots_[s].entry != 0) return slots_[s].entry - 1;
   if (size_ >= kNoEdge - 1) throw std::length_error("SolidBuilder: too many edges");
   if (2 * (std::size_t{size_} + 1) > slots_.size()) {
-    grow_index();
+    index_again(2 * slots_.size());
     s = slot_of(lo, hi);
   }
   if ((size_ & kMask) == 0) {

@@ -3,7 +3,8 @@
 // it; its faces are the ones that traverse it; each ring's `edges` names the edge of each side. The
 // reference is a map filled face by face. Seeded meshes: tori of triangles and quads with faces and
 // vertex numbers shuffled (so first-seen order is far from vertex order), the same with faces left out
-// (open), a face with a hole, and an edge of three faces (its error names the three).
+// (open), a face with a hole, an edge of three faces (its error names the three), and fans of thousands
+// of triangles round one vertex (the lookup table's runs of full slots crowd round it, edge_table.cpp).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -164,6 +165,45 @@ TEST(EdgeNumbering, AnEdgeOfThreeFacesIsReportedWithItsFaces) {
           << d.message;
     }
   EXPECT_TRUE(found);
+}
+
+// A double cone: hubs 0 (top) and 1 (bottom) with `rim` triangles each round a rim of vertices 2 …;
+// faces shuffled by `rng`, the rim's numbers shuffled too where `shuffle_rim`.
+Mesh double_cone(test::Rng& rng, int rim, bool shuffle_rim) {
+  Mesh mesh;
+  mesh.points = {{0, 0, 1}, {0, 0, -1}};
+  std::vector<VertexIndex> at(static_cast<std::size_t>(rim));
+  for (int i = 0; i < rim; ++i) {
+    at[static_cast<std::size_t>(i)] = static_cast<VertexIndex>(2 + i);
+    const double u = 2 * std::numbers::pi * i / rim;
+    mesh.points.push_back({std::cos(u), std::sin(u), 0});
+  }
+  if (shuffle_rim) {
+    for (std::size_t i = at.size(); i > 1; --i) std::swap(at[i - 1], at[rng.engine() % i]);
+    std::vector<Point3> points = mesh.points;
+    for (int i = 0; i < rim; ++i)
+      points[at[static_cast<std::size_t>(i)]] = mesh.points[static_cast<std::size_t>(2 + i)];
+    mesh.points = points;
+  }
+  for (int i = 0; i < rim; ++i) {
+    const VertexIndex a = at[static_cast<std::size_t>(i)], b = at[static_cast<std::size_t>((i + 1) % rim)];
+    mesh.faces.push_back({{0, a, b}});
+    mesh.faces.push_back({{1, b, a}});
+  }
+  for (std::size_t i = mesh.faces.size(); i > 1; --i)
+    std::swap(mesh.faces[i - 1], mesh.faces[rng.engine() % i]);
+  return mesh;
+}
+
+TEST(EdgeNumbering, FansOfThousandsRoundOneVertexNumberEdgesInFirstSeenOrder) {
+  for (unsigned seed = 31; seed <= 34; ++seed) {
+    test::Rng rng(seed);
+    const Mesh mesh = double_cone(rng, seed % 2 == 0 ? 3000 : 700, seed > 32);
+    const SolidBuildResult result = build(mesh);
+    ASSERT_TRUE(result.ok()) << "seed " << seed;
+    EXPECT_TRUE(result.solid->closed);
+    expect_edges_as_named(mesh, *result.solid);
+  }
 }
 
 }  // namespace
