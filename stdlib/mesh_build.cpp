@@ -19,47 +19,19 @@ namespace hlr::stdlib::mesh_detail {
 
 // ---- ExactPointIndex -------------------------------------------------------------------------------------
 
-namespace {
+ExactPointIndex::ExactPointIndex(std::size_t expected)
+    : slots_(std::bit_ceil(std::max<std::size_t>(16, 2 * expected)), Slot{0, kEmpty}) {}
 
-std::size_t slot_hash(const std::uint64_t key[3]) {
+ExactPointIndex::Key ExactPointIndex::key_of(Point3 p) {
+  return {std::bit_cast<std::uint64_t>(p.x + 0.0), std::bit_cast<std::uint64_t>(p.y + 0.0),
+          std::bit_cast<std::uint64_t>(p.z + 0.0)};  // -0 + 0 = +0
+}
+
+std::uint64_t ExactPointIndex::hash_of(const Key& key) {
   std::uint64_t h = key[0] * 0x9E3779B97F4A7C15ull;
   h = (h ^ (h >> 29) ^ key[1]) * 0xBF58476D1CE4E5B9ull;
   h = (h ^ (h >> 32) ^ key[2]) * 0x94D049BB133111EBull;
-  return static_cast<std::size_t>(h ^ (h >> 31));
-}
-
-}  // namespace
-
-ExactPointIndex::ExactPointIndex(std::size_t expected)
-    : slots_(std::bit_ceil(std::max<std::size_t>(16, 2 * expected)), Slot{{0, 0, 0}, kEmpty}) {}
-
-void ExactPointIndex::grow() {
-  std::vector<Slot> old(2 * slots_.size(), Slot{{0, 0, 0}, kEmpty});
-  old.swap(slots_);
-  const std::size_t mask = slots_.size() - 1;
-  for (const Slot& slot : old) {
-    if (slot.index == kEmpty) continue;
-    std::size_t s = slot_hash(slot.key) & mask;
-    while (slots_[s].index != kEmpty) s = (s + 1) & mask;
-    slots_[s] = slot;
-  }
-}
-
-std::uint32_t ExactPointIndex::insert(Point3 p, std::uint32_t index) {
-  if (2 * (size_ + 1) > slots_.size()) grow();
-  const std::uint64_t key[3] = {std::bit_cast<std::uint64_t>(p.x + 0.0),
-                                std::bit_cast<std::uint64_t>(p.y + 0.0),
-                                std::bit_cast<std::uint64_t>(p.z + 0.0)};  // -0 + 0 = +0
-  const std::size_t mask = slots_.size() - 1;
-  for (std::size_t s = slot_hash(key) & mask;; s = (s + 1) & mask) {
-    Slot& slot = slots_[s];
-    if (slot.index == kEmpty) {
-      slot = {{key[0], key[1], key[2]}, index};
-      ++size_;
-      return index;
-    }
-    if (slot.key[0] == key[0] && slot.key[1] == key[1] && slot.key[2] == key[2]) return slot.index;
-  }
+  return h ^ (h >> 31);
 }
 
 namespace {
@@ -234,7 +206,8 @@ class Builder {
     for (const RawLine& l : raw_.lines) used[l.a] = used[l.b] = true;
     ExactPointIndex first(n);  // n vertices were read, so this is backed by data
     for (std::size_t i = 0; i < n; ++i) {
-      const std::uint32_t j = first.insert(positions_[i], static_cast<std::uint32_t>(i));
+      const std::uint32_t j = first.insert(positions_[i], static_cast<std::uint32_t>(i),
+                                           [&](std::uint32_t k) { return positions_[k]; });
       canon_[i] = j;
       if (j != i && used[i])
         warnings_.add("merged-vertex",

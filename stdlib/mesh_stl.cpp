@@ -27,7 +27,8 @@ class Welder {
   explicit Welder(RawMesh& raw, std::size_t expected = 0) : raw_(raw), index_(expected) {}
   std::uint32_t add(Point3 p, const Source& where) {
     const auto fresh = static_cast<std::uint32_t>(raw_.vertices.size());
-    const std::uint32_t v = index_.insert(p, fresh);
+    const std::uint32_t v =
+        index_.insert(p, fresh, [&](std::uint32_t k) { return raw_.vertices[k].position; });
     if (v == fresh) raw_.vertices.push_back({{p.x + 0.0, p.y + 0.0, p.z + 0.0}, where});  // -0 + 0 = +0
     return v;
   }
