@@ -162,6 +162,31 @@ std::vector<std::string> deflate_in_parts(const std::string& text) {
   return parts;
 }
 
+// Strokes [first, end) as path operators, appended to `out`. A long run is written in parts side by side
+// and joined in order (the text is the same): the 10⁶-triangle torus's page took 40 ms to write on one
+// core.
+void put_strokes(std::string& out, const std::vector<PlotStroke>& strokes, std::size_t first, std::size_t end,
+                 const Rect2& box) {
+  auto put = [&](std::string& text, std::size_t from, std::size_t to) {
+    for (std::size_t i = from; i < to; ++i)
+      clip_polyline_to_rect(
+          strokes[i].points, box, [&](Point2 p) { put_point(text, p, " m\n"); },
+          [&](Point2 p) { put_point(text, p, " l\n"); });
+  };
+  constexpr std::size_t kPartStrokes = 1024;
+  const std::size_t count = (end - first + kPartStrokes - 1) / kPartStrokes;
+  if (count < 2) {
+    put(out, first, end);
+    return;
+  }
+  std::vector<std::string> parts(count);
+  parallel_chunks(count, 0, [&](std::size_t k) {
+    const std::size_t from = first + k * kPartStrokes;
+    put(parts[k], from, std::min(end, from + kPartStrokes));
+  });
+  for (const std::string& part : parts) out += part;
+}
+
 }  // namespace
 
 PdfPage make_pdf_page(const PlotPage& page, const PdfOptions& o) {
@@ -209,10 +234,7 @@ PdfPage make_pdf_page(const PlotPage& page, const PdfOptions& o) {
         } else {
           c += "[] 0 d\n";
         }
-        for (std::size_t i = first; i < end; ++i)
-          clip_polyline_to_rect(
-              page.strokes[i].points, box, [&](Point2 p) { put_point(c, p, " m\n"); },
-              [&](Point2 p) { put_point(c, p, " l\n"); });
+        put_strokes(c, page.strokes, first, end, box);
         c += "S\n";
       });
 

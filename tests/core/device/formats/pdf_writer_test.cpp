@@ -12,6 +12,7 @@
 #include <sstream>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "core/device/page/atomic_file.hpp"
 #include "tests/support/temp_dir.hpp"
@@ -138,13 +139,30 @@ TEST_F(PdfWriterTest, ALargePageIsSeveralContentStreamsReadInOrder) {
   EXPECT_GE(streams, 3u);
   EXPECT_NE(file.find("/Contents [5 0 R 6 0 R 7 0 R"), std::string::npos);
   std::size_t moves = 0, lines = 0;
+  std::vector<Point2> read;  // the path's points in the order written (millimetres, three decimals)
   std::istringstream in(text);
   for (std::string line; std::getline(in, line);) {
-    moves += line.size() > 2 && line.ends_with(" m");
-    lines += line.size() > 2 && line.ends_with(" l");
+    const bool move = line.size() > 2 && line.ends_with(" m"), to = line.size() > 2 && line.ends_with(" l");
+    moves += move;
+    lines += to;
+    if (move || to) {
+      std::istringstream numbers(line);
+      Point2 p;
+      numbers >> p.x >> p.y;
+      read.push_back(p);
+    }
   }
   EXPECT_EQ(moves, page.strokes.size());
   EXPECT_EQ(moves + lines, points);
+  // Written in parts side by side (long runs of strokes), the points still come stroke by stroke in order.
+  std::size_t k = 0;
+  for (const PlotStroke& stroke : page.strokes)
+    for (const Point2& p : stroke.points) {
+      ASSERT_LT(k, read.size());
+      ASSERT_NEAR(read[k].x, p.x, 6e-4) << "point " << k;  // half a thousandth, and rounding
+      ASSERT_NEAR(read[k].y, p.y, 6e-4) << "point " << k;
+      ++k;
+    }
   const std::string info = output_of("pdftoppm -r 20 -png -singlefile '" + target.string() + "' '" +
                                      (dir_ / "large").string() + "'");
   EXPECT_TRUE(fs::exists(dir_ / "large.png")) << info;
