@@ -11,6 +11,7 @@
 
 #include "core/format_number.hpp"
 #include "core/parallel.hpp"
+#include "core/release_memory.hpp"
 #include "core/solid/solid_builder.hpp"
 #include "core/tolerance.hpp"
 #include "stdlib/mesh_detail.hpp"
@@ -35,11 +36,6 @@ std::uint64_t ExactPointIndex::hash_of(const Key& key) {
 }
 
 namespace {
-
-template <typename Vector>
-void release(Vector& v) {
-  Vector().swap(v);  // (clear() and = {} keep the capacity)
-}
 
 constexpr std::size_t kWarningsPerKind = 10;
 // Total work allowed for ear clipping in one import (vertex visits): plenty for real data, a bound for

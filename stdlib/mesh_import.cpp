@@ -9,6 +9,7 @@
 #include <memory>
 #include <optional>
 
+#include "core/release_memory.hpp"
 #include "stdlib/mesh_detail.hpp"
 
 namespace hlr::stdlib {
@@ -103,7 +104,7 @@ ImportedMesh import_mesh(const fs::path& path, const MeshImportOptions& options)
       [&](mesh_detail::RawMesh (*read)(std::string_view, const std::string&, const MeshImportOptions&)) {
         std::string text = read_file(path, name, options.max_file_bytes);
         mesh_detail::RawMesh raw = read(text, name, options);
-        text = std::string();
+        release(text);
         return mesh_detail::build_mesh(std::move(raw), options);
       };
   if (ext == ".off") return parsed(&mesh_detail::read_off);

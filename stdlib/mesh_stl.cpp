@@ -9,6 +9,7 @@
 #include <unordered_map>
 
 #include "core/parallel.hpp"
+#include "core/release_memory.hpp"
 #include "stdlib/mesh_detail.hpp"
 
 namespace hlr::stdlib {
@@ -131,7 +132,7 @@ RawMesh read_binary(std::string_view bytes, const std::string& name, const MeshI
     }
     bucket_begin[buckets] = sum;
   }
-  counts = {};
+  release(counts);
   std::vector<Sorted> sorted(corners);
   parallel_chunks(parts, threads, [&](std::size_t k) {
     std::size_t* next = at.data() + k * buckets;
@@ -164,7 +165,7 @@ RawMesh read_binary(std::string_view bytes, const std::string& name, const MeshI
       }
     }
   });
-  sorted = {};
+  release(sorted);
 
   // Number the points in the order they first appear; `first` becomes the corners' vertex numbers.
   for (std::size_t c = 0; c < corners; ++c) {

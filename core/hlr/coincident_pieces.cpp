@@ -7,6 +7,7 @@
 
 #include "core/geometry/rect2.hpp"
 #include "core/parallel.hpp"
+#include "core/release_memory.hpp"
 #include "core/tolerance.hpp"
 
 namespace hlr {
@@ -95,7 +96,7 @@ std::size_t remove_covered_pieces(std::vector<VisibleSegment>& segments, unsigne
   piece_cells.reserve(cell_start[n]);
   for (std::vector<std::uint32_t>& cells_of_chunk : chunk_cells) {
     piece_cells.insert(piece_cells.end(), cells_of_chunk.begin(), cells_of_chunk.end());
-    cells_of_chunk = {};
+    release(cells_of_chunk);
   }
   std::vector<std::uint32_t> starts(static_cast<std::size_t>(cells) * cells + 1, 0);
   for (std::uint32_t c : piece_cells) ++starts[c + 1];

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "core/parallel.hpp"
+#include "core/release_memory.hpp"
 #include "core/tolerance.hpp"
 
 namespace hlr {
@@ -102,7 +103,7 @@ FaceGrid::FaceGrid(const FrameSetup& setup, const Rect2& domain, unsigned thread
   std::vector<std::uint32_t> fill(cell_start_.begin(), cell_start_.end() - 1);
   for (std::vector<Entry>& chunk : entries) {
     for (const Entry& e : chunk) items_[fill[e.cell]++] = e.occluder;
-    chunk = {};
+    release(chunk);
   }
 }
 

@@ -11,6 +11,7 @@
 #include "core/hlr/intersection_lines.hpp"
 #include "core/hlr/smooth_contours.hpp"
 #include "core/parallel.hpp"
+#include "core/release_memory.hpp"
 #include "core/tolerance.hpp"
 
 namespace hlr {
@@ -516,7 +517,7 @@ FrameSetup prepare_frame(const Scene& scene, const Camera& camera, bool keep_cul
           Tolerance::picture(max_abs, camera.focal, ltol, view.perspective ? occ.min_depth : 1.0);
     }
   });
-  view_points = {};
+  release(view_points);
   // Where a job added less than it made room for (faces wholly behind the near plane, pieces clipped
   // away), what follows moves down, its point and ring numbers with it.
   Room at;
