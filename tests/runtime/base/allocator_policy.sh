@@ -2,7 +2,9 @@
 # The heap on transparent huge pages (runtime/base/allocator_policy.hpp): a process calling
 # heap_on_huge_pages() starts again once with glibc.malloc.hugetlb=1 added to GLIBC_TUNABLES, keeps
 # what the user set there, leaves a hugetlb setting of the user's alone and never restarts twice; under
-# AddressSanitizer it does nothing. Then hlrscript itself: a REPL's own environment (/proc/PID/environ).
+# AddressSanitizer it does nothing. The heap warmer (heap_warmer.hpp) faults in the huge page past the
+# heap's use, which stays cold without it (and under AddressSanitizer, where it does nothing). Then
+# hlrscript itself: a REPL's own environment (/proc/PID/environ).
 # usage: allocator_policy.sh PROBE HLRSCRIPT WORKDIR SANITIZED(0|1)
 set -euo pipefail
 probe=$1 hlrscript=$2 work=$3 sanitized=$4
@@ -22,7 +24,15 @@ check() {
   [ "$count" = "$starts" ] || fail "GLIBC_TUNABLES='$given': $count starts, expected $starts"
 }
 
+# warmth MODE EXPECTED: the probe's last line with `warm` or `cold`.
+warmth() {
+  local seen
+  seen=$("$probe" "$1" 2>/dev/null | tail -n 1)
+  [ "$seen" = "$2" ] || fail "probe $1: the page past the heap's use is $seen, expected $2"
+}
+
 if [ "$sanitized" = 1 ]; then
+  warmth warm cold
   check "" "" 1
   check "glibc.malloc.arena_max=4" "glibc.malloc.arena_max=4" 1
   echo "allocator_policy: sanitized build, environment left alone"
@@ -32,6 +42,12 @@ check "" "glibc.malloc.hugetlb=1" 2
 check "glibc.malloc.arena_max=4" "glibc.malloc.arena_max=4:glibc.malloc.hugetlb=1" 2
 check "glibc.malloc.hugetlb=0" "glibc.malloc.hugetlb=0" 1
 check "glibc.malloc.hugetlb=1" "glibc.malloc.hugetlb=1" 1
+warmth cold cold
+if [ "$(uname -r | awk -F. '{print ($1 > 5 || ($1 == 5 && $2 >= 14))}')" = 1 ]; then
+  warmth warm warmed
+else
+  echo "allocator_policy: kernel $(uname -r) cannot populate pages (MADV_POPULATE_WRITE, 5.14): warmer not checked"
+fi
 
 # hlrscript calls it: a REPL, once it has answered a line, runs with the setting.
 fifo="$work/in" out="$work/out"
