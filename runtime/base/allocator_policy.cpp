@@ -8,13 +8,7 @@
 #include <unistd.h>
 #endif
 
-#if defined(__SANITIZE_ADDRESS__)
-#define HLR_OWN_ALLOCATOR 1
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-#define HLR_OWN_ALLOCATOR 1
-#endif
-#endif
+#include "runtime/base/sanitizer_allocator.hpp"
 
 namespace hlr::runtime {
 

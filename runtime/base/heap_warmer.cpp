@@ -2,13 +2,7 @@
 
 #include <cstdlib>  // defines __GLIBC__ under glibc
 
-#if defined(__SANITIZE_ADDRESS__)
-#define HLR_OWN_ALLOCATOR 1
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-#define HLR_OWN_ALLOCATOR 1
-#endif
-#endif
+#include "runtime/base/sanitizer_allocator.hpp"
 
 #if defined(__GLIBC__) && defined(__linux__) && !defined(HLR_OWN_ALLOCATOR)
 #include <malloc.h>
