@@ -290,8 +290,8 @@ SolidBuildResult SolidBuilder::build() const {
     twins.run(find_twins);
 
   std::vector<bool> valid(ready.begin(), ready.end());
-  EdgeEntries edges(refs_.size() / 2 + lines_.size(),
-                    vertices.positions().size());  // a closed surface names each edge twice
+  // A closed surface names each edge twice; the vertex count lays the lookup table out in vertex order.
+  EdgeEntries edges(refs_.size() / 2 + lines_.size(), vertices.positions().size());
   constexpr std::size_t kAhead = 8;  // faces whose edges are asked for ahead (EdgeEntries::prefetch)
   std::vector<std::vector<SolidDiagnostic>> face_diagnostics(chunks.size());
   for (std::size_t k = 0; k < chunks.size(); ++k) {
