@@ -1,14 +1,35 @@
 #include "core/hlr/face_grid.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
+#include <cstdint>
+#include <limits>
 #include <vector>
 
+#include "core/counting_sort.hpp"
+#include "core/geometry/float_bounds.hpp"
 #include "core/parallel.hpp"
-#include "core/release_memory.hpp"
 #include "core/tolerance.hpp"
 
 namespace hlr {
+namespace {
+
+// A depth as a 30-bit key in the floats' order, never above the depth (a NaN as −∞: never passed over),
+// and the float a key stands for.
+std::uint32_t depth_key(double depth) {
+  const float f = std::isnan(depth) ? -std::numeric_limits<float>::infinity() : float_below(depth);
+  const auto bits = std::bit_cast<std::uint32_t>(f);
+  const std::uint32_t ordered = (bits & 0x80000000u) != 0 ? ~bits : bits | 0x80000000u;
+  return ordered >> 2;  // dropping the low bits rounds towards −∞
+}
+
+float depth_of_key(std::uint32_t key) {
+  const std::uint32_t ordered = key << 2;
+  return std::bit_cast<float>((ordered & 0x80000000u) != 0 ? ordered & 0x7fffffffu : ~ordered);
+}
+
+}  // namespace
 
 FaceGrid::FaceGrid(const FrameSetup& setup, const Rect2& domain, unsigned threads) : domain_(domain) {
   const std::vector<Occluder>& occluders = setup.occluders;
@@ -81,29 +102,39 @@ FaceGrid::FaceGrid(const FrameSetup& setup, const Rect2& domain, unsigned thread
       for (int c = from; c <= to; ++c) fn(static_cast<std::size_t>(r) * nx_ + c);
     }
   };
-  // Each occluder's cells are found once, by chunks of occluders in parallel, as (cell, occluder) pairs in
-  // occluder order; the cells' lists are then filled chunk after chunk, so each lists its occluders in
-  // order whatever the number of threads.
-  struct Entry {
-    std::uint32_t cell, occluder;
-  };
+  // The occluders ranked nearest first, by their depth rounded down to 30 bits of a float (ties in the
+  // occluders' order); a cell lists its occluders in that order, and each item carries the depth it was
+  // ranked by, so that a walk may stop at the first lying behind an edge.
+  std::vector<std::uint64_t> ranked(occluders.size());
+  for (std::size_t i = 0; i < occluders.size(); ++i)
+    ranked[i] = std::uint64_t{depth_key(occluders[i].min_depth)} << 32 | i;
+  sort_by_30_bits(ranked, 32);
+  // Each occluder's cells are found once, by chunks of occluders in parallel, listed in occluder order
+  // with where each occluder's begin; the cells' lists are then filled occluder by occluder in rank
+  // order, so each lists its occluders in that order whatever the number of threads.
   constexpr std::size_t kChunk = 4096;
   const std::size_t chunks = (occluders.size() + kChunk - 1) / kChunk;
-  std::vector<std::vector<Entry>> entries(chunks);
+  std::vector<std::vector<std::uint32_t>> cells_of(chunks);
+  std::vector<std::uint32_t> first_cell(occluders.size());  // in its chunk's list
   parallel_chunks(chunks, threads_for(occluders.size(), 2 * kChunk, threads), [&](std::size_t k) {
-    for (std::size_t i = k * kChunk; i < std::min(occluders.size(), (k + 1) * kChunk); ++i)
-      for_cells(occluders[i], [&](std::size_t cell) {
-        entries[k].push_back({static_cast<std::uint32_t>(cell), static_cast<std::uint32_t>(i)});
-      });
+    for (std::size_t i = k * kChunk; i < std::min(occluders.size(), (k + 1) * kChunk); ++i) {
+      first_cell[i] = static_cast<std::uint32_t>(cells_of[k].size());
+      for_cells(occluders[i],
+                [&](std::size_t cell) { cells_of[k].push_back(static_cast<std::uint32_t>(cell)); });
+    }
   });
-  for (const std::vector<Entry>& chunk : entries)
-    for (const Entry& e : chunk) ++cell_start_[e.cell + 1];
+  for (const std::vector<std::uint32_t>& chunk : cells_of)
+    for (const std::uint32_t cell : chunk) ++cell_start_[cell + 1];
   for (std::size_t i = 1; i < cell_start_.size(); ++i) cell_start_[i] += cell_start_[i - 1];
   items_.resize(cell_start_.back());
   std::vector<std::uint32_t> fill(cell_start_.begin(), cell_start_.end() - 1);
-  for (std::vector<Entry>& chunk : entries) {
-    for (const Entry& e : chunk) items_[fill[e.cell]++] = e.occluder;
-    release(chunk);
+  for (const std::uint64_t key : ranked) {
+    const auto i = static_cast<std::uint32_t>(key);
+    const std::vector<std::uint32_t>& chunk = cells_of[i / kChunk];
+    const std::size_t end =
+        i + 1 < occluders.size() && (i + 1) % kChunk != 0 ? first_cell[i + 1] : chunk.size();
+    const float depth = depth_of_key(static_cast<std::uint32_t>(key >> 32));
+    for (std::size_t e = first_cell[i]; e < end; ++e) items_[fill[chunk[e]]++] = {depth, i};
   }
 }
 

@@ -99,7 +99,7 @@ struct Worker {
     // outlines of those that may hide it — so that their loads overlap: occluders come from all over
     // memory (a scan's faces are in no order), and one at a time each test waited on two of them.
     near.clear();
-    grid->for_each_near(c.pic0, c.pic1, stamp, index + 1, [&](std::uint32_t id) {
+    grid->for_each_near(c.pic0, c.pic1, max_depth, stamp, index + 1, [&](std::uint32_t id) {
       __builtin_prefetch(&setup.occluders[id]);
       near.push_back(id);
     });
