@@ -129,9 +129,11 @@ std::string pdf_date(const std::string& iso) {
 // fandisk's, 1.6 ms against 6.5 ms for 7 %. Level 1 gains little more time and costs 30 %.
 constexpr int kPageCompression = 4;
 // A page's operators are compressed in parts of about this size, each a content stream of its own, on all
-// cores (the bunny's page in three, one core's 7.5 ms becoming about 4.5 on two). The parts depend on the
-// text alone, not on the cores, so the bytes do not either; each costs its dictionary's warm-up, < 1 %.
-constexpr std::size_t kContentPartBytes = 256 * 1024;
+// cores. Parts this small share out evenly: the bunny's page (618 kB) in ten, where three parts of 256 kB
+// kept one core busy twice as long as the other, and fandisk's (200 kB) in four, where it was one. The
+// parts depend on the text alone, not on the cores, so the bytes do not either; each costs its
+// dictionary's warm-up (the bunny's file 1 % larger).
+constexpr std::size_t kContentPartBytes = 64 * 1024;
 
 std::string deflate(std::string_view text) {
   uLongf size = compressBound(static_cast<uLong>(text.size()));
@@ -164,7 +166,7 @@ std::vector<std::string> deflate_in_parts(const std::string& text) {
 
 // Strokes [first, end) as path operators, appended to `out`. A long run is written in parts side by side
 // and joined in order (the text is the same): the 10⁶-triangle torus's page took 40 ms to write on one
-// core.
+// core. Parts of a few hundred strokes share out evenly over the cores (the bunny's 2 589 strokes in 11).
 void put_strokes(std::string& out, const std::vector<PlotStroke>& strokes, std::size_t first, std::size_t end,
                  const Rect2& box) {
   auto put = [&](std::string& text, std::size_t from, std::size_t to) {
@@ -173,7 +175,7 @@ void put_strokes(std::string& out, const std::vector<PlotStroke>& strokes, std::
           strokes[i].points, box, [&](Point2 p) { put_point(text, p, " m\n"); },
           [&](Point2 p) { put_point(text, p, " l\n"); });
   };
-  constexpr std::size_t kPartStrokes = 1024;
+  constexpr std::size_t kPartStrokes = 256;
   const std::size_t count = (end - first + kPartStrokes - 1) / kPartStrokes;
   if (count < 2) {
     put(out, first, end);
