@@ -14,6 +14,7 @@
 #include "core/release_memory.hpp"
 #include "core/solid/solid_builder.hpp"
 #include "core/tolerance.hpp"
+#include "stdlib/face_cycles.hpp"
 #include "stdlib/mesh_detail.hpp"
 
 namespace hlr::stdlib::mesh_detail {
@@ -90,7 +91,6 @@ class Builder {
     out_vertices_.reserve(raw_.face_vertices.size());
     out_ends_.reserve(n);
     out_raw_.reserve(n);
-    seen_ = FaceCycleSet(n);
     // Most faces need no repair: they are found side by side in parts (their cycle's hash with them), so
     // that what must go in file order — duplicates, repairs and their warnings — is all that is left.
     std::vector<std::uint64_t> hashes(n);  // (released with `plain` before the builder runs)
@@ -108,16 +108,33 @@ class Builder {
         hashes[f] = cycle_hash(key);
       }
     });
-    constexpr std::size_t kAhead = 16;  // faces whose slot is asked for ahead of its lookup
-    for (std::size_t f = 0; f < n; ++f) {
-      if (f + kAhead < n && plain[f + kAhead]) seen_.prefetch(hashes[f + kAhead]);
-      if (!plain[f]) {
-        add_face(f);
-        continue;
+    // A mesh whose every face is kept as it is, none repeating another (a scan, a CAD export), passes its
+    // faces on as they are, by parts side by side; any other goes face by face, in file order, for its
+    // repairs and their messages.
+    const bool as_read = n >= kPartFaces &&
+                         std::all_of(plain.begin(), plain.end(), [](char p) { return p != 0; }) &&
+                         !any_repeated_cycle(hashes, [&](std::size_t a, std::size_t b) {
+                           std::vector<std::uint32_t> ring_a, ring_b, key_a, key_b;
+                           std::uint32_t ignored = 0;
+                           clean_ring(a, ring_a, ignored), clean_ring(b, ring_b, ignored);
+                           canonical_cycle(ring_a, key_a), canonical_cycle(ring_b, key_b);
+                           return key_a == key_b;
+                         });
+    if (as_read) {
+      pass_on_as_read();
+    } else {
+      seen_ = FaceCycleSet(n);
+      constexpr std::size_t kAhead = 16;  // faces whose slot is asked for ahead of its lookup
+      for (std::size_t f = 0; f < n; ++f) {
+        if (f + kAhead < n && plain[f + kAhead]) seen_.prefetch(hashes[f + kAhead]);
+        if (!plain[f]) {
+          add_face(f);
+          continue;
+        }
+        std::uint32_t ignored = 0;
+        clean_ring(f, ring_, ignored);
+        if (!is_duplicate(ring_, f, hashes[f])) push_face(ring_, f);
       }
-      std::uint32_t ignored = 0;
-      clean_ring(f, ring_, ignored);
-      if (!is_duplicate(ring_, f, hashes[f])) push_face(ring_, f);
     }
     release(hashes), release(plain), seen_ = FaceCycleSet();
     for (std::size_t l = 0; l < raw_.lines.size(); ++l) add_line(l);
@@ -132,42 +149,6 @@ class Builder {
   struct BuiltLine {
     std::uint32_t a, b;
     std::size_t raw;
-  };
-
-  // Faces by the hash of their cycle of vertices. A slot holds 8 bytes (the hash's top half as a
-  // fingerprint, the face), so the table of a large mesh stays in cache; open addressing, like
-  // ExactPointIndex. Faces are numbered in 32 bits: a file of 2^32 faces could not be held anyway.
-  class FaceCycleSet {
-   public:
-    explicit FaceCycleSet(std::size_t expected = 0)
-        : slots_(std::bit_ceil(std::max<std::size_t>(16, 2 * expected)), Slot{0, kEmpty}) {}
-    void prefetch(std::uint64_t hash) const {
-      __builtin_prefetch(&slots_[static_cast<std::size_t>(hash) & (slots_.size() - 1)]);
-    }
-    // The first stored face whose cycle `same` confirms, or `face` (now stored) when none is.
-    template <typename Same>
-    std::size_t insert(std::uint64_t hash, std::size_t face, const Same& same) {
-      // Sized at construction for every face, so at most half full (the fingerprints cannot be rehashed).
-      if (2 * (size_ + 1) > slots_.size()) throw std::logic_error("FaceCycleSet: more faces than expected");
-      const std::size_t mask = slots_.size() - 1;
-      const auto fingerprint = static_cast<std::uint32_t>(hash >> 32);
-      for (std::size_t s = static_cast<std::size_t>(hash) & mask;; s = (s + 1) & mask) {
-        if (slots_[s].face == kEmpty) {
-          slots_[s] = {fingerprint, static_cast<std::uint32_t>(face)};
-          ++size_;
-          return face;
-        }
-        if (slots_[s].fingerprint == fingerprint && same(slots_[s].face)) return slots_[s].face;
-      }
-    }
-
-   private:
-    struct Slot {
-      std::uint32_t fingerprint, face;
-    };
-    static constexpr std::uint32_t kEmpty = 0xffffffffu;
-    std::vector<Slot> slots_;
-    std::size_t size_ = 0;
   };
 
   MeshProblem at(const Source& s, std::string message, std::string hint = {}) const {
@@ -344,30 +325,6 @@ class Builder {
                      "planar faces to avoid them"));
   }
 
-  // The canonical form of a ring's cycle: from its smallest vertex, in the direction that reads smaller.
-  static void canonical_cycle(const std::vector<std::uint32_t>& ring, std::vector<std::uint32_t>& out) {
-    const std::size_t n = ring.size();
-    const std::size_t m = static_cast<std::size_t>(std::min_element(ring.begin(), ring.end()) - ring.begin());
-    auto step = [n](std::size_t i, bool forward) {
-      return forward ? (i + 1 == n ? 0 : i + 1) : (i == 0 ? n - 1 : i - 1);
-    };
-    bool forward = true;
-    for (std::size_t k = 1, i = step(m, true), j = step(m, false); k < n;
-         ++k, i = step(i, true), j = step(j, false))
-      if (ring[i] != ring[j]) {
-        forward = ring[i] < ring[j];
-        break;
-      }
-    out.clear();
-    for (std::size_t k = 0, i = m; k < n; ++k, i = step(i, forward)) out.push_back(ring[i]);
-  }
-
-  static std::uint64_t cycle_hash(const std::vector<std::uint32_t>& cycle) {
-    std::uint64_t h = cycle.size() * 0x9E3779B97F4A7C15ull;
-    for (std::uint32_t v : cycle) h = (h ^ v) * 0xBF58476D1CE4E5B9ull, h ^= h >> 31;
-    return h;
-  }
-
   // A face with the same cycle of vertices as an earlier one (either direction) is dropped. `hash` is
   // cycle_hash of the ring's canonical cycle.
   bool is_duplicate(const std::vector<std::uint32_t>& ring, std::size_t f, std::uint64_t hash) {
@@ -387,13 +344,33 @@ class Builder {
     return true;
   }
 
+  // Every face as read (welded), in file order.
+  void pass_on_as_read() {
+    const std::size_t n = raw_.face_count();
+    if (n > options_.max_faces) fail_too_many_faces(options_.max_faces);
+    constexpr std::size_t kPart = 65536;
+    out_vertices_.resize(raw_.face_vertices.size());
+    parallel_chunks((out_vertices_.size() + kPart - 1) / kPart,
+                    threads_for(out_vertices_.size(), 2 * kPart, 0), [&](std::size_t k) {
+                      const std::size_t end = std::min(out_vertices_.size(), (k + 1) * kPart);
+                      for (std::size_t i = k * kPart; i < end; ++i)
+                        out_vertices_[i] = canon_[raw_.face_vertices[i]];
+                    });
+    out_ends_.assign(raw_.face_ends.begin(), raw_.face_ends.end());
+    out_raw_.resize(n);
+    for (std::size_t f = 0; f < n; ++f) out_raw_[f] = f;
+  }
+
+  [[noreturn]] void fail_too_many_faces(std::size_t f) const {
+    fail_at(raw_.face_sources[f],
+            "the mesh has more than " + std::to_string(options_.max_faces) +
+                " faces after splitting non-planar ones",
+            "raise the face limit or simplify the mesh");
+  }
+
   template <typename Ring>
   void push_face(const Ring& ring, std::size_t f) {
-    if (out_ends_.size() >= options_.max_faces)
-      fail_at(raw_.face_sources[f],
-              "the mesh has more than " + std::to_string(options_.max_faces) +
-                  " faces after splitting non-planar ones",
-              "raise the face limit or simplify the mesh");
+    if (out_ends_.size() >= options_.max_faces) fail_too_many_faces(f);
     for (std::uint32_t v : ring) out_vertices_.push_back(v);  // (insert calls memcpy for a dozen bytes)
     out_ends_.push_back(out_vertices_.size());
     out_raw_.push_back(f);
