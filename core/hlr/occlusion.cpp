@@ -87,6 +87,12 @@ void add_hidden_intervals(const FrameSetup& setup, const Camera& camera, const C
   // cheapest test. Only for small polygons: a large one is cheaper to meet through its grid.
   const std::uint32_t outer_end = setup.ring_ends[o.first_ring];
   if (outer_end - o.first_point <= kSideTestPoints) {
+    // Quick reject 3, asked first: the faces round an edge's end vertices (two thirds of a scanned mesh's
+    // tests), told by comparing points before any arithmetic.
+    if (outer_end - o.first_point == 3 && o.ring_count == 1 &&
+        leaves_triangle_corner(&setup.polygon_points[o.first_point], c.pic0, c.pic1)) {
+      return;
+    }
     const Vector2 d = c.pic1 - c.pic0;
     const double reach = ptol * length(d);
     bool left = true, right = true;
@@ -96,11 +102,6 @@ void add_hidden_intervals(const FrameSetup& setup, const Camera& camera, const C
       right = right && side < -reach;
     }
     if (left || right) return;
-    // Quick reject 3: the faces round an edge's end vertices (two thirds of a scanned mesh's tests).
-    if (outer_end - o.first_point == 3 && o.ring_count == 1 &&
-        leaves_triangle_corner(&setup.polygon_points[o.first_point], c.pic0, c.pic1)) {
-      return;
-    }
   }
   // 1. Behind the plane: g(t) = eye_side·(n·v(t) + offset) < 0, linear in t. Beyond the tolerance the
   //    sign of g is certain; within it, a triangle's side is decided exactly (decide_within_tolerance).
