@@ -7,6 +7,7 @@
 #include <memory>
 #include <optional>
 
+#include "core/first_touch.hpp"
 #include "core/geometry/clip2d.hpp"
 #include "core/hlr/coincident_pieces.hpp"
 #include "core/hlr/face_grid.hpp"
@@ -170,32 +171,56 @@ struct Examined {
 };
 
 // The pieces of the runs, which examined candidates 0 … n − 1 between them, in candidate order; each
-// chunk is released once copied.
-std::vector<VisibleSegment> in_candidate_order(std::vector<Examined>& runs, std::uint32_t n) {
+// chunk is released once copied. The chunks are copied side by side (`threads` as for parallel_chunks):
+// each fills its own candidates' places.
+std::vector<VisibleSegment> in_candidate_order(std::vector<Examined>& runs, std::uint32_t n,
+                                               unsigned threads) {
   std::vector<std::uint32_t> offset(n + 1, 0);  // of each candidate's pieces
-  for (const Examined& run : runs)
-    for (std::size_t k = 0; k < run.chunks.size(); ++k)
-      for (std::size_t j = 0; j < run.chunks[k].counts.size(); ++j)
-        offset[run.order[k * Examined::kChunk + j] + 1] = run.chunks[k].counts[j];
-  for (std::uint32_t i = 0; i < n; ++i) offset[i + 1] += offset[i];
-  std::vector<VisibleSegment> segments(offset[n]);
+  std::vector<std::pair<Examined*, std::size_t>> chunks;
   for (Examined& run : runs)
     for (std::size_t k = 0; k < run.chunks.size(); ++k) {
-      Examined::Chunk& chunk = run.chunks[k];
-      const VisibleSegment* from = chunk.pieces.data();
-      for (std::size_t j = 0; j < chunk.counts.size(); ++j) {
-        std::copy(from, from + chunk.counts[j],
-                  segments.begin() + offset[run.order[k * Examined::kChunk + j]]);
-        from += chunk.counts[j];
-      }
-      chunk = Examined::Chunk{};
+      chunks.emplace_back(&run, k);
+      for (std::size_t j = 0; j < run.chunks[k].counts.size(); ++j)
+        offset[run.order[k * Examined::kChunk + j] + 1] = run.chunks[k].counts[j];
     }
+  for (std::uint32_t i = 0; i < n; ++i) offset[i + 1] += offset[i];
+  std::vector<VisibleSegment> segments;
+  resize_touched(segments, offset[n], threads);
+  constexpr std::size_t kMinPieces = 16384;  // fewer are copied sooner than shared out
+  parallel_chunks(chunks.size(), threads_for(offset[n], kMinPieces, threads), [&](std::size_t c) {
+    const auto [run, k] = chunks[c];
+    Examined::Chunk& chunk = run->chunks[k];
+    const VisibleSegment* from = chunk.pieces.data();
+    for (std::size_t j = 0; j < chunk.counts.size(); ++j) {
+      std::copy(from, from + chunk.counts[j],
+                segments.begin() + offset[run->order[k * Examined::kChunk + j]]);
+      from += chunk.counts[j];
+    }
+    chunk = Examined::Chunk{};
+  });
   return segments;
 }
 
 // Restricts candidates [from, end) to the picture frame, sets their tolerances and widens `domain` to
 // them; drops what lies outside the frame. Returns the new end.
-std::size_t clip_candidates(FrameSetup& setup, std::size_t from, const Camera& camera, Rect2& domain) {
+std::size_t clip_candidates(FrameSetup& setup, std::size_t from, const Camera& camera, Rect2& domain,
+                            unsigned threads) {
+  if (!camera.frame) {  // none dropped: by parts side by side (`threads` as for parallel_chunks)
+    const std::size_t n = setup.candidates.size() - from;
+    constexpr std::size_t kPart = 16384;
+    std::vector<Rect2> part_domain((n + kPart - 1) / kPart, Rect2::none());
+    parallel_chunks(part_domain.size(), threads_for(n, 2 * kPart, threads), [&](std::size_t k) {
+      for (std::size_t i = from + k * kPart; i < from + std::min(n, (k + 1) * kPart); ++i) {
+        Candidate& c = setup.candidates[i];
+        set_picture_tolerance(c, camera, setup.length_tolerance);
+        part_domain[k].include(c.pic0);
+        part_domain[k].include(c.pic1);
+      }
+    });
+    for (const Rect2& part : part_domain)
+      domain.include({part.xmin, part.ymin}), domain.include({part.xmax, part.ymax});
+    return setup.candidates.size();
+  }
   std::size_t kept = from;
   for (std::size_t i = from; i < setup.candidates.size(); ++i) {
     Candidate c = setup.candidates[i];
@@ -281,7 +306,7 @@ FrameResult render_frame(const Scene& scene, const Camera& camera, const HlrOpti
     ms.setup += lap();
     // Only what lies inside the picture frame is examined.
     domain = Rect2::none();
-    edges = clip_candidates(setup, 0, camera, domain);
+    edges = clip_candidates(setup, 0, camera, domain, options.threads);
     grid = std::make_unique<const FaceGrid>(setup, domain, options.threads);
     ms.grid += lap();
   };
@@ -379,7 +404,7 @@ FrameResult render_frame(const Scene& scene, const Camera& camera, const HlrOpti
     }
     append_intersection_candidates(setup, scene, camera, options.include_hidden);
     Rect2 wider = domain;
-    const std::size_t end = clip_candidates(setup, edges, camera, wider);
+    const std::size_t end = clip_candidates(setup, edges, camera, wider, options.threads);
     if (end > edges) {
       // The grid holds only the occluders that meet its domain: lines beyond it need a wider grid.
       if (!domain.contains({wider.xmin, wider.ymin}) || !domain.contains({wider.xmax, wider.ymax})) {
@@ -400,7 +425,7 @@ FrameResult render_frame(const Scene& scene, const Camera& camera, const HlrOpti
   // The inputs are no longer needed; free them before the join, which briefly holds the output twice.
   grid.reset();
   setup = FrameSetup{};
-  result.segments = in_candidate_order(runs, n);
+  result.segments = in_candidate_order(runs, n, options.threads);
   if (options.coincident_once) remove_covered_pieces(result.segments, options.threads);
   result.stats.face_tests = face_tests;
   ms.finish = lap();
