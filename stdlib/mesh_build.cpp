@@ -6,6 +6,7 @@
 #include <cctype>
 #include <cmath>
 #include <map>
+#include <numeric>
 #include <optional>
 #include <stdexcept>
 
@@ -358,7 +359,7 @@ class Builder {
                     });
     out_ends_.assign(raw_.face_ends.begin(), raw_.face_ends.end());
     out_raw_.resize(n);
-    for (std::size_t f = 0; f < n; ++f) out_raw_[f] = f;
+    std::iota(out_raw_.begin(), out_raw_.end(), std::size_t{0});
   }
 
   [[noreturn]] void fail_too_many_faces(std::size_t f) const {
