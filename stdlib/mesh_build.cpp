@@ -473,36 +473,42 @@ class Builder {
     build_options.crease_angle_deg = options_.crease_angle_deg;
     build_options.fix_winding = true;
     SolidBuilder builder(build_options);
+    // A large mesh's lists are filled by parts side by side.
+    constexpr std::size_t kPart = 16384;
+    auto by_parts = [](std::size_t count, auto&& body) {
+      parallel_chunks((count + kPart - 1) / kPart, threads_for(count, 2 * kPart, 0), [&](std::size_t k) {
+        for (std::size_t i = k * kPart; i < std::min(count, (k + 1) * kPart); ++i) body(i);
+      });
+    };
+    const std::size_t nv = kept.size();
+    std::vector<Point3> points(nv);
     raw_of = kept;
     if (spatial) {
-      std::vector<Point3> points(kept.size());
-      for (std::size_t i = 0; i < kept.size(); ++i) points[i] = raw_.vertices[kept[i]].position;
+      by_parts(nv, [&](std::size_t i) { points[i] = raw_.vertices[kept[i]].position; });
       const std::vector<std::uint32_t> order = morton_order(points);
-      for (std::size_t i = 0; i < kept.size(); ++i) raw_of[i] = kept[order[i]];
+      by_parts(nv, [&](std::size_t i) { raw_of[i] = kept[order[i]]; });
     }
     std::vector<VertexIndex> index_of(raw_.vertices.size(), 0);  // raw vertex → builder vertex
-    builder.reserve(raw_of.size(), out_ends_.size(), out_vertices_.size());
-    for (std::uint32_t v : raw_of)
-      index_of[v] = builder.add_vertex(raw_.vertices[v].position, make_tag(TagKind::Vertex, v));
+    std::vector<std::int64_t> tags(nv);
+    by_parts(nv, [&](std::size_t i) {
+      index_of[raw_of[i]] = static_cast<VertexIndex>(i);
+      points[i] = raw_.vertices[raw_of[i]].position;
+      tags[i] = make_tag(TagKind::Vertex, raw_of[i]);
+    });
+    builder.reserve(0, out_ends_.size(), out_vertices_.size(), true);
+    builder.add_vertices(points, tags);
+    release(points), release(tags);
     builder.label_indexed_vertices([&](VertexIndex i) { return vertex_name(raw_of[i]); });
     if (spatial) {
       std::vector<std::uint32_t> vertices(out_vertices_.size());
-      for (std::size_t i = 0; i < vertices.size(); ++i) vertices[i] = index_of[out_vertices_[i]];
-      const std::vector<std::uint32_t> order = faces_by_least_vertex(vertices, out_ends_, raw_of.size());
+      by_parts(vertices.size(), [&](std::size_t i) { vertices[i] = index_of[out_vertices_[i]]; });
       std::vector<std::uint32_t> ordered;
       std::vector<std::size_t> ends;
-      ordered.reserve(vertices.size());
-      ends.reserve(order.size());
-      for (std::size_t k = 0; k < order.size(); ++k) {
-        const std::size_t f = order[k], begin = f == 0 ? 0 : out_ends_[f - 1];
-        ordered.insert(ordered.end(), vertices.begin() + static_cast<std::ptrdiff_t>(begin),
-                       vertices.begin() + static_cast<std::ptrdiff_t>(out_ends_[f]));
-        ends.push_back(ordered.size());
-      }
+      order_faces_by_least_vertex(vertices, out_ends_, nv, ordered, ends);
       release(vertices);
       builder.add_indexed_polygons(ordered, ends, make_tag(TagKind::Face, 0));
     } else {
-      for (std::uint32_t& v : out_vertices_) v = index_of[v];
+      by_parts(out_vertices_.size(), [&](std::size_t i) { out_vertices_[i] = index_of[out_vertices_[i]]; });
       builder.add_indexed_polygons(out_vertices_, out_ends_, make_tag(TagKind::Face, 0));
     }
     for (std::size_t i = 0; i < lines_.size(); ++i)

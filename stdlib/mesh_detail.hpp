@@ -164,6 +164,10 @@ std::vector<std::uint32_t> morton_order(std::span<const Point3> points);
 // vertex; faces with the same least vertex keep their order.
 std::vector<std::uint32_t> faces_by_least_vertex(std::span<const std::uint32_t> vertices,
                                                  std::span<const std::size_t> ends, std::size_t vertex_count);
+// The faces in that order: their vertices back to back in `ordered`, each face's end in `ordered_ends`.
+void order_faces_by_least_vertex(std::span<const std::uint32_t> vertices, std::span<const std::size_t> ends,
+                                 std::size_t vertex_count, std::vector<std::uint32_t>& ordered,
+                                 std::vector<std::size_t>& ordered_ends);
 
 // ---- problems ------------------------------------------------------------------------------------------
 

@@ -193,9 +193,18 @@ class Finder {
     // with the normal of their own corner, lie beyond the coincidence tolerance of their stored planes too
     // (the two normals differ by rounding, far below it), so corner_crossing would find nothing.
     const double far = 2 * tol_;
-    constexpr std::size_t kChunk = 8192;
-    std::vector<Part> parts((nv + kChunk - 1) / kChunk);
-    parallel_chunks(parts.size(), threads_for(corners.size(), 50000, 0), [&](std::size_t k) {
+    // Parts of about kPartCorners corners, each a run of whole fans: the tested vertices lie scattered
+    // over the vertex order, so parts of equal vertex ranges were unequal work.
+    constexpr std::size_t kPartCorners = 2048;
+    std::vector<std::size_t> part_vertex{0};  // the first vertex of each part, then nv
+    for (std::size_t c = kPartCorners; c < corners.size(); c += kPartCorners) {
+      const auto v =
+          static_cast<std::size_t>(std::lower_bound(first.begin(), first.end() - 1, c) - first.begin());
+      if (v > part_vertex.back()) part_vertex.push_back(v);
+    }
+    if (part_vertex.back() != nv) part_vertex.push_back(nv);
+    std::vector<Part> parts(part_vertex.size() - 1);
+    parallel_chunks(parts.size(), threads_for(corners.size(), 2 * kPartCorners, 0), [&](std::size_t k) {
       Part& part = parts[k];
       struct Near {  // one triangle of the fan: its corner, the other points relative to V, its normal
         const Corner* corner;
@@ -203,7 +212,7 @@ class Finder {
         double reach;  // far times the normal's length
       };
       std::vector<Near> round;
-      for (std::size_t v = k * kChunk; v < std::min(nv, (k + 1) * kChunk); ++v) {
+      for (std::size_t v = part_vertex[k]; v < part_vertex[k + 1]; ++v) {
         if (first[v + 1] - first[v] < 2) continue;
         const Point3 V = solid_.vertices[v];
         round.clear();

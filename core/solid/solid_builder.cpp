@@ -6,6 +6,7 @@
 #include <tbb/task_group.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <stdexcept>
 
@@ -80,6 +81,25 @@ VertexIndex SolidBuilder::add_vertex(Point3 position, std::int64_t tag) {
   return static_cast<VertexIndex>(number);
 }
 
+VertexIndex SolidBuilder::add_vertices(std::span<const Point3> positions,
+                                       std::span<const std::int64_t> tags) {
+  const std::size_t first = positions_.size();
+  if (!tags.empty() && tags.size() != positions.size())
+    throw std::invalid_argument("SolidBuilder::add_vertices: one tag a vertex, or none");
+  if (first + positions.size() > solid_detail::kIndexRef)
+    throw std::length_error("SolidBuilder: too many vertices");
+  if (!vertex_ids_.empty()) vertex_ids_.resize(first + positions.size(), kIndexedId);
+  if (!tags.empty() || !vertex_tags_.empty()) {
+    vertex_tags_.resize(first, -1);  // the first tag given: the earlier ones were -1
+    if (tags.empty())
+      vertex_tags_.resize(first + positions.size(), -1);
+    else
+      vertex_tags_.insert(vertex_tags_.end(), tags.begin(), tags.end());
+  }
+  positions_.insert(positions_.end(), positions.begin(), positions.end());
+  return static_cast<VertexIndex>(first);
+}
+
 void SolidBuilder::add_face(const std::vector<std::string>& outer,
                             const std::vector<std::vector<std::string>>& holes, std::int64_t tag) {
   for (const std::string& id : outer) refs_.push_back(id_ref(id));
@@ -131,20 +151,34 @@ void SolidBuilder::add_indexed_polygons(std::span<const VertexIndex> vertices,
   if (ref0 + vertices.size() > 0xffffffffu)
     throw std::length_error("SolidBuilder: too many vertex references");
   if (ring0 + ends.size() > 0xffffffffu) throw std::length_error("SolidBuilder: too many rings");
+  // A mesh's faces, by parts side by side.
+  constexpr std::size_t kPart = 16384;
+  auto by_parts = [](std::size_t count, auto&& body) {
+    parallel_chunks((count + kPart - 1) / kPart, threads_for(count, 2 * kPart, 0), [&](std::size_t k) {
+      for (std::size_t i = k * kPart; i < std::min(count, (k + 1) * kPart); ++i) body(i);
+    });
+  };
   refs_.resize(ref0 + vertices.size());
-  for (std::size_t i = 0; i < vertices.size(); ++i) refs_[ref0 + i] = index_ref(vertices[i]);
+  // A number too large to be an indexed reference is interned as text (index_ref), on this thread, in order.
+  std::atomic<bool> too_large = false;
+  by_parts(vertices.size(), [&](std::size_t i) {
+    if (vertices[i] < solid_detail::kIndexRef)
+      refs_[ref0 + i] = solid_detail::kIndexRef | vertices[i];
+    else
+      too_large.store(true, std::memory_order_relaxed);
+  });
+  if (too_large)
+    for (std::size_t i = 0; i < vertices.size(); ++i)
+      if (vertices[i] >= solid_detail::kIndexRef) refs_[ref0 + i] = index_ref(vertices[i]);
   ring_ends_.resize(ring0 + ends.size());
   face_ends_.resize(face0 + ends.size());
-  for (std::size_t k = 0; k < ends.size(); ++k) {
+  const bool tagged = first_tag != -1 || !face_tags_.empty();
+  if (tagged) face_tags_.resize(face0 + ends.size(), -1);  // (the earlier faces' -1 too, if none had one)
+  by_parts(ends.size(), [&](std::size_t k) {
     ring_ends_[ring0 + k] = static_cast<std::uint32_t>(ref0 + ends[k]);
     face_ends_[face0 + k] = static_cast<std::uint32_t>(ring0 + k + 1);
-  }
-  if (first_tag != -1 || !face_tags_.empty()) {
-    if (face_tags_.empty()) face_tags_.assign(face0, -1);
-    face_tags_.reserve(face0 + ends.size());
-    for (std::size_t k = 0; k < ends.size(); ++k)
-      face_tags_.push_back(first_tag == -1 ? -1 : first_tag + static_cast<std::int64_t>(k));
-  }
+    if (tagged) face_tags_[face0 + k] = first_tag == -1 ? -1 : first_tag + static_cast<std::int64_t>(k);
+  });
   face_is_loop_.resize(face0 + ends.size(), false);
 }
 

@@ -76,6 +76,9 @@ class SolidBuilder {
   // and returns that number. Indexed faces and lines name vertices by such numbers; they behave exactly
   // like add_face and add_line with the decimal ids, so both styles may be mixed.
   VertexIndex add_vertex(Point3 position, std::int64_t tag = -1);
+  // Many at once, tagged tags[i] (tags empty: none); the same as adding them one by one. Returns the first's
+  // number.
+  VertexIndex add_vertices(std::span<const Point3> positions, std::span<const std::int64_t> tags = {});
   // rings[0] is the outer loop, the others holes, as in add_face.
   void add_indexed_face(std::span<const std::vector<VertexIndex>> rings, std::int64_t tag = -1);
   // A face of one ring (no holes), the common case of mesh files: no vector per face.

@@ -63,6 +63,68 @@ TEST(FacesByLeastVertex, StableCountingOrder) {
   EXPECT_EQ(faces_by_least_vertex(vertices, ends, 10), (std::vector<std::uint32_t>{1, 3, 0, 2}));
 }
 
+// Large enough to go by parts: the order is the Morton order computed here one point at a time (bits
+// interleaved one by one, a stable sort), with non-finite coordinates among the points.
+TEST(MortonOrder, ManyPointsByPartsAsOneByOne) {
+  std::mt19937_64 rng(42);
+  std::uniform_real_distribution<double> coordinate(-5, 7);
+  std::vector<Point3> points(100'000);
+  for (Point3& p : points) p = {coordinate(rng), coordinate(rng) * 0.01, coordinate(rng)};
+  points[77'777].y = std::numeric_limits<double>::quiet_NaN();
+  double lo[3] = {1e300, 1e300, 1e300}, hi[3] = {-1e300, -1e300, -1e300};
+  for (const Point3& p : points)
+    for (int a = 0; a < 3; ++a)
+      if (std::isfinite(p[a])) lo[a] = std::min(lo[a], p[a]), hi[a] = std::max(hi[a], p[a]);
+  std::vector<std::uint64_t> code(points.size(), 0);
+  for (std::size_t i = 0; i < points.size(); ++i)
+    for (int a = 0; a < 3; ++a) {
+      const double t = (points[i][a] - lo[a]) * (1023.0 / (hi[a] - lo[a]));
+      const auto cell = t >= 0 ? static_cast<std::uint64_t>(std::min(t, 1023.0)) : 0;  // NaN: 0
+      for (int bit = 0; bit < 10; ++bit) code[i] |= ((cell >> bit) & 1) << (3 * bit + a);
+    }
+  std::vector<std::uint32_t> expected(points.size());
+  std::iota(expected.begin(), expected.end(), 0u);
+  std::stable_sort(expected.begin(), expected.end(),
+                   [&](std::uint32_t a, std::uint32_t b) { return code[a] < code[b]; });
+  EXPECT_EQ(morton_order(points), expected);
+}
+
+// Faces of three to five vertices put in the order of their least vertex, by parts: as a stable sort of
+// the faces by it, their vertices copied after each other.
+TEST(FacesByLeastVertex, ManyFacesOrderedByPartsAsBySorting) {
+  std::mt19937_64 rng(7);
+  std::vector<std::uint32_t> vertices;
+  std::vector<std::size_t> ends;
+  for (int f = 0; f < 60'000; ++f) {
+    const int size = 3 + static_cast<int>(rng() % 3);
+    for (int k = 0; k < size; ++k) vertices.push_back(static_cast<std::uint32_t>(rng() % 20'000));
+    ends.push_back(vertices.size());
+  }
+  auto face = [&](std::size_t f) {
+    return std::vector<std::uint32_t>(
+        vertices.begin() + static_cast<std::ptrdiff_t>(f == 0 ? 0 : ends[f - 1]),
+        vertices.begin() + static_cast<std::ptrdiff_t>(ends[f]));
+  };
+  std::vector<std::size_t> order(ends.size());
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    const auto fa = face(a), fb = face(b);
+    return *std::min_element(fa.begin(), fa.end()) < *std::min_element(fb.begin(), fb.end());
+  });
+  std::vector<std::uint32_t> expected;
+  std::vector<std::size_t> expected_ends;
+  for (std::size_t f : order) {
+    const auto ring = face(f);
+    expected.insert(expected.end(), ring.begin(), ring.end());
+    expected_ends.push_back(expected.size());
+  }
+  std::vector<std::uint32_t> ordered;
+  std::vector<std::size_t> ordered_ends;
+  mesh_detail::order_faces_by_least_vertex(vertices, ends, 20'000, ordered, ordered_ends);
+  EXPECT_EQ(ordered, expected);
+  EXPECT_EQ(ordered_ends, expected_ends);
+}
+
 // A torus of nu × nv quads split into triangles, outward, with its vertices and faces shuffled (fixed seed).
 struct Triangles {
   std::vector<Point3> vertices;

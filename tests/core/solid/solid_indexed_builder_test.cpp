@@ -2,7 +2,10 @@
 // and the same diagnostics as named input with the decimal ids, also when both styles are mixed.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdint>
+#include <numbers>
+#include <span>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -188,6 +191,81 @@ TEST(SolidIndexedBuilder, PolygonsAtOnceMatchOneByOne) {
   const std::vector<VertexIndex> ring = {0, 1, 2};
   EXPECT_THROW(bad.add_indexed_polygons(ring, std::vector<std::size_t>{2, 1}), std::invalid_argument);
   EXPECT_THROW(bad.add_indexed_polygons(ring, std::vector<std::size_t>{4}), std::invalid_argument);
+}
+
+// A torus of 200 × 100 quads split into triangles: enough faces and vertices that add_vertices and
+// add_indexed_polygons fill their lists by parts side by side.
+struct TorusMesh {
+  std::vector<Point3> points;
+  std::vector<VertexIndex> vertices;
+  std::vector<std::size_t> ends;
+};
+TorusMesh torus_mesh() {
+  constexpr int nu = 200, nv = 100;
+  TorusMesh t;
+  for (int i = 0; i < nu; ++i)
+    for (int j = 0; j < nv; ++j) {
+      const double u = 2 * std::numbers::pi * i / nu, v = 2 * std::numbers::pi * j / nv;
+      t.points.push_back({(3 + std::cos(v)) * std::cos(u), (3 + std::cos(v)) * std::sin(u), std::sin(v)});
+    }
+  auto at = [](int i, int j) { return static_cast<VertexIndex>((i % nu) * nv + j % nv); };
+  for (int i = 0; i < nu; ++i)
+    for (int j = 0; j < nv; ++j)
+      for (const VertexIndex v :
+           {at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j), at(i + 1, j + 1), at(i, j + 1)}) {
+        t.vertices.push_back(v);
+        if (t.vertices.size() % 3 == 0) t.ends.push_back(t.vertices.size());
+      }
+  return t;
+}
+
+// Many vertices and faces at once (add_vertices, add_indexed_polygons, by parts) build what the same
+// added one by one build: a clean torus; the same with a vertex repeated at another's position (tagged
+// errors) and two faces, one among the first and one among the last, naming a vertex number too large to
+// be indexed.
+TEST(SolidIndexedBuilder, ManyAtOnceMatchOneByOne) {
+  const TorusMesh t = torus_mesh();
+  ASSERT_EQ(t.ends.size(), 40000u);
+  for (const bool broken : {false, true}) {
+    std::vector<Point3> points = t.points;
+    std::vector<VertexIndex> vertices = t.vertices;
+    if (broken) {
+      points.push_back(points[123]);
+      vertices[4] = vertices[3 * 35'000 + 1] = solid_detail::kIndexRef + 5;
+    }
+    std::vector<std::int64_t> tags(points.size());
+    for (std::size_t i = 0; i < tags.size(); ++i) tags[i] = 3 * static_cast<std::int64_t>(i) + 1;
+    SolidBuilder at_once, one_by_one;
+    EXPECT_EQ(at_once.add_vertices(points, tags), 0u);
+    for (std::size_t i = 0; i < points.size(); ++i) one_by_one.add_vertex(points[i], tags[i]);
+    at_once.add_indexed_polygons(vertices, t.ends, 7);
+    for (std::size_t f = 0; f < t.ends.size(); ++f)
+      one_by_one.add_indexed_polygon(std::span<const VertexIndex>(vertices).subspan(3 * f, 3),
+                                     7 + static_cast<std::int64_t>(f));
+    const SolidBuildResult a = at_once.build(), b = one_by_one.build();
+    EXPECT_EQ(a.ok(), !broken) << all_messages(a);
+    expect_same(a, b);
+  }
+}
+
+// add_vertices keeps the tags of vertices added before and after it as one by one would, tagged or not.
+TEST(SolidIndexedBuilder, VerticesAtOnceKeepTags) {
+  const std::vector<Point3> corners(std::begin(kCube), std::end(kCube));
+  const std::vector<std::int64_t> tags = {10, 11, 12, 13};
+  SolidBuilder at_once, one_by_one;
+  at_once.add_vertex(corners[0]);                                         // untagged
+  EXPECT_EQ(at_once.add_vertices(std::span(corners).subspan(1, 3)), 1u);  // untagged
+  EXPECT_EQ(at_once.add_vertices(std::span(corners).subspan(4, 4), tags), 4u);
+  at_once.add_vertices(std::vector<Point3>{corners[2], corners[5]});  // untagged twins: errors
+  for (std::size_t i = 0; i < 8; ++i) one_by_one.add_vertex(corners[i], i < 4 ? -1 : tags[i - 4]);
+  one_by_one.add_vertex(corners[2]);
+  one_by_one.add_vertex(corners[5]);
+  for (SolidBuilder* b : {&at_once, &one_by_one})
+    for (const Rings& face : kCubeFaces) b->add_indexed_face(face, 20);
+  const SolidBuildResult a = at_once.build();
+  EXPECT_EQ(with_code(a, "duplicate-vertex").size(), 2u) << all_messages(a);
+  expect_same(a, one_by_one.build());
+  EXPECT_THROW(at_once.add_vertices(corners, tags), std::invalid_argument);  // one tag a vertex, or none
 }
 
 }  // namespace
