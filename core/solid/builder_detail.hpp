@@ -32,13 +32,16 @@ class Diagnostics {
     out_.push_back({SolidDiagnostic::Severity::Warning, code, std::move(message), tag});
   }
   bool has_errors() const { return has_errors_; }
-  void append(std::vector<SolidDiagnostic>& more) {  // moves them in, in their order
-    for (SolidDiagnostic& d : more) {
+  void append(std::vector<SolidDiagnostic>& more) { insert(out_.size(), more); }  // moves them in, in order
+  // The same, placed before the one at `at` (at most size()): where they belong in the stages' order.
+  void insert(std::size_t at, std::vector<SolidDiagnostic>& more) {
+    for (const SolidDiagnostic& d : more)
       has_errors_ = has_errors_ || d.severity == SolidDiagnostic::Severity::Error;
-      out_.push_back(std::move(d));
-    }
+    out_.insert(out_.begin() + static_cast<std::ptrdiff_t>(at), std::make_move_iterator(more.begin()),
+                std::make_move_iterator(more.end()));
     more.clear();
   }
+  std::size_t size() const { return out_.size(); }
 
  private:
   std::vector<SolidDiagnostic>& out_;
@@ -152,7 +155,9 @@ class EdgeEntries {
   };
   // `vertex_count`: the solid's vertices, all edges' ends below it. Given, the lookup table keeps the
   // edges in the order of their lower vertex (see home()).
-  explicit EdgeEntries(std::size_t expected_entries, std::size_t vertex_count = 0);
+  // `indexed_entries`: how many of them the lookup table is sized for (all when 0).
+  explicit EdgeEntries(std::size_t expected_entries, std::size_t vertex_count = 0,
+                       std::size_t indexed_entries = 0);
   std::uint32_t get(VertexIndex a, VertexIndex b);         // its number; creates the entry if new
   std::uint32_t find(VertexIndex a, VertexIndex b) const;  // kNoEdge if absent
   void add_use(std::uint32_t e, EdgeUse use);
@@ -167,6 +172,11 @@ class EdgeEntries {
   void prefetch(VertexIndex a, VertexIndex b) const {
     __builtin_prefetch(&slots_[home(std::min(a, b), std::max(a, b))]);
   }
+  // Takes in `later`'s entries, entered from faces after all of this table's, as if entered here: those
+  // already here get their uses, the others are numbered after this table's. number[j] is then later's
+  // entry j's number here. Returns false, changing nothing, if a use beyond the second would result (a
+  // non-manifold edge: enter the faces one by one instead, for its uses' order). Frees the lookup table.
+  bool absorb(const EdgeEntries& later, std::vector<std::uint32_t>& number);
   // Frees the block holding entry e once e is its last entry: a last pass in order frees as it goes.
   void release_after(std::uint32_t e) {
     if ((e & kMask) == kMask) blocks_[e >> kShift] = std::vector<EdgeEntry>();
@@ -220,6 +230,13 @@ class EdgeEntries {
 // and on-face lines.
 void enter_face_edges(EdgeEntries& edges, FaceIndex face, SmallVector<Ring, 1>& rings, const Loops* loops,
                       std::span<const std::pair<VertexIndex, VertexIndex>> lines);
+
+// Enters the edges of the valid faces (ready[f] != 0), all with their rings as their loops and no on-face
+// lines, as enter_face_edges face after face would — the same numbers, uses and order — by two halves of
+// the faces side by side, the second half's entries then absorbed. `edges` is empty, and left without its
+// lookup table.
+void enter_plain_faces(EdgeEntries& edges, std::vector<Face>& faces, const std::vector<char>& ready,
+                       std::size_t expected_entries, std::size_t vertex_count);
 
 // Reports edges used by more than two faces.
 void report_non_manifold(const EdgeEntries& edges, Tags face_tags, const VertexTable& vertices,

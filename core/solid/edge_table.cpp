@@ -10,9 +10,10 @@
 
 namespace hlr::solid_detail {
 
-EdgeEntries::EdgeEntries(std::size_t expected_entries, std::size_t vertex_count)
+EdgeEntries::EdgeEntries(std::size_t expected_entries, std::size_t vertex_count, std::size_t indexed_entries)
     : expected_(expected_entries),
-      slots_(std::bit_ceil(std::max<std::size_t>(16, 2 * expected_entries))),
+      slots_(std::bit_ceil(
+          std::max<std::size_t>(16, 2 * (indexed_entries ? indexed_entries : expected_entries)))),
       vertex_count_(vertex_count) {
   shift_ = 64 - std::countr_zero(slots_.size());
   set_per_vertex();
@@ -89,6 +90,37 @@ void EdgeEntries::add_use(std::uint32_t e, EdgeUse use) {
 
 void EdgeEntries::release_index() { slots_ = std::vector<Slot>(); }
 
+bool EdgeEntries::absorb(const EdgeEntries& later, std::vector<std::uint32_t>& number) {
+  if (!extra_.empty() || !later.extra_.empty()) return false;
+  // Looked up side by side (the table is only read), then taken in in order.
+  const std::size_t m = later.size();
+  number.assign(m, kNoEdge);
+  constexpr std::size_t kPart = 16384;
+  parallel_chunks((m + kPart - 1) / kPart, threads_for(m, 2 * kPart, 0), [&](std::size_t k) {
+    for (std::size_t j = k * kPart; j < std::min(m, (k + 1) * kPart); ++j)
+      number[j] = find(later[static_cast<std::uint32_t>(j)].lo, later[static_cast<std::uint32_t>(j)].hi);
+  });
+  for (std::size_t j = 0; j < m; ++j)
+    if (number[j] != kNoEdge && (*this)[number[j]].uses + later[static_cast<std::uint32_t>(j)].uses > 2)
+      return false;
+  if (size_ + m >= kNoEdge - 1) throw std::length_error("SolidBuilder: too many edges");
+  release_index();
+  for (std::size_t j = 0; j < m; ++j) {
+    const EdgeEntry& entry = later[static_cast<std::uint32_t>(j)];
+    if (number[j] != kNoEdge) {
+      for (int k = 0; k < entry.uses; ++k) add_use(number[j], entry.use(k));
+      continue;
+    }
+    if ((size_ & kMask) == 0) {
+      blocks_.emplace_back();
+      blocks_.back().reserve(size_ == 0 ? std::min<std::size_t>(expected_ + 1, kMask + 1) : kMask + 1);
+    }
+    blocks_.back().push_back(entry);
+    number[j] = size_++;
+  }
+  return true;
+}
+
 std::string edge_name(const VertexTable& vertices, VertexIndex a, VertexIndex b) {
   return vertices.id(std::min(a, b)) + "\u2013" + vertices.id(std::max(a, b));
 }
@@ -116,6 +148,49 @@ void enter_face_edges(EdgeEntries& edges, FaceIndex face, SmallVector<Ring, 1>& 
     EdgeEntry& e = edges[edges.get(a, b)];
     if (e.marking_face == kNoFace) e.marking_face = face;
   }
+}
+
+void enter_plain_faces(EdgeEntries& edges, std::vector<Face>& faces, const std::vector<char>& ready,
+                       std::size_t expected_entries, std::size_t vertex_count) {
+  const std::size_t n = faces.size(), half = n / 2;
+  // Each half's table sized for a little over half the entries, the first one's store for all of them.
+  const std::size_t indexed = expected_entries / 2 + expected_entries / 16;
+  edges = EdgeEntries(expected_entries, vertex_count, indexed);
+  EdgeEntries later(indexed, vertex_count);
+  auto enter = [&](EdgeEntries& table, std::size_t from, std::size_t to) {
+    constexpr std::size_t kAhead = 8;  // faces whose edges are asked for ahead (EdgeEntries::prefetch)
+    for (std::size_t f = from; f < to; ++f) {
+      if (f + kAhead < to && ready[f + kAhead]) {
+        const auto& ring = faces[f + kAhead].rings[0].vertices;
+        for (std::size_t i = 0; i < ring.size() && ring.size() <= kAhead; ++i)
+          table.prefetch(ring[i], ring[i + 1 < ring.size() ? i + 1 : 0]);
+      }
+      if (ready[f]) enter_face_edges(table, static_cast<FaceIndex>(f), faces[f].rings, nullptr, {});
+    }
+  };
+  parallel_chunks(2, 0, [&](std::size_t k) {
+    if (k == 0)
+      enter(edges, 0, half);
+    else
+      enter(later, half, n);
+  });
+  std::vector<std::uint32_t> number;
+  if (!edges.absorb(later, number)) {  // a non-manifold edge: face after face, for its uses' order
+    edges = EdgeEntries(expected_entries, vertex_count);
+    enter(edges, 0, n);
+    edges.release_index();
+    return;
+  }
+  later = EdgeEntries(0);
+  // The second half's rings hold its own table's numbers.
+  constexpr std::size_t kPart = 8192;
+  const std::size_t tail = n - half;
+  parallel_chunks((tail + kPart - 1) / kPart, threads_for(tail, 2 * kPart, 0), [&](std::size_t k) {
+    for (std::size_t f = half + k * kPart; f < std::min(n, half + (k + 1) * kPart); ++f)
+      if (ready[f])
+        for (Ring& r : faces[f].rings)
+          for (std::uint32_t& e : r.edges) e = number[e];
+  });
 }
 
 void report_non_manifold(const EdgeEntries& edges, Tags face_tags, const VertexTable& vertices,

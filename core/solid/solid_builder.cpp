@@ -309,49 +309,65 @@ SolidBuildResult SolidBuilder::build() const {
     }
   });
 
-  // Vertices at one position are looked for while the edges are entered (which takes one thread; they
-  // only read the vertex table), their errors reported in their place: after the vertex stage's, before
-  // the faces'.
+  // Vertices at one position are looked for beside a stage that takes one thread (they only read the
+  // vertex table): the edges' entry face after face, or else the orientation. Their errors go in their
+  // place: after the vertex stage's, before the faces'.
   std::vector<SolidDiagnostic> twin_diagnostics;
   auto find_twins = [&] {
     Diagnostics found(twin_diagnostics);
     report_vertex_twins(vertices, Tags{vertex_tags_}, found);
   };
   tbb::task_group twins;
-  if (threads_for(n, 4096, 0) == 1)
-    find_twins();
-  else
-    twins.run(find_twins);
+  auto start_twins = [&] {
+    if (threads_for(n, 4096, 0) == 1)
+      find_twins();
+    else
+      twins.run(find_twins);
+  };
+  const std::size_t twins_at = diagnostics.size();
 
   std::vector<bool> valid(ready.begin(), ready.end());
   // A closed surface names each edge twice; the vertex count lays the lookup table out in vertex order.
-  EdgeEntries edges(refs_.size() / 2 + lines_.size(), vertices.positions().size());
-  constexpr std::size_t kAhead = 8;  // faces whose edges are asked for ahead (EdgeEntries::prefetch)
+  const std::size_t expected_entries = refs_.size() / 2 + lines_.size(),
+                    vertex_count = vertices.positions().size();
   std::vector<std::vector<SolidDiagnostic>> face_diagnostics(chunks.size());
-  for (std::size_t k = 0; k < chunks.size(); ++k) {
-    Chunk& chunk = chunks[k];
-    face_diagnostics[k] = std::move(chunk.diagnostics);
-    std::size_t special = 0;
-    for (std::size_t f = k * kChunkFaces; f < std::min(n, (k + 1) * kChunkFaces); ++f) {
-      if (f + kAhead < n && ready[f + kAhead]) {
-        const auto& ring = solid.faces[f + kAhead].rings[0].vertices;
-        for (std::size_t i = 0; i < ring.size() && ring.size() <= kAhead; ++i)
-          edges.prefetch(ring[i], ring[i + 1 < ring.size() ? i + 1 : 0]);
+  // Where every face's rings are its loops and no line is to be added (a mesh file, a generator), the
+  // edges are entered by halves side by side; else face after face.
+  const bool by_halves =
+      lines_.empty() && threads_for(n, 2 * kChunkFaces, 0) != 1 &&
+      std::all_of(chunks.begin(), chunks.end(), [](const Chunk& chunk) { return chunk.faces.empty(); });
+  EdgeEntries edges(by_halves ? 0 : expected_entries, vertex_count);
+  if (by_halves) {
+    for (std::size_t k = 0; k < chunks.size(); ++k) face_diagnostics[k] = std::move(chunks[k].diagnostics);
+    chunks.clear();
+    enter_plain_faces(edges, solid.faces, ready, expected_entries, vertex_count);
+    start_twins();
+  } else {
+    start_twins();
+    constexpr std::size_t kAhead = 8;  // faces whose edges are asked for ahead (EdgeEntries::prefetch)
+    for (std::size_t k = 0; k < chunks.size(); ++k) {
+      Chunk& chunk = chunks[k];
+      face_diagnostics[k] = std::move(chunk.diagnostics);
+      std::size_t special = 0;
+      for (std::size_t f = k * kChunkFaces; f < std::min(n, (k + 1) * kChunkFaces); ++f) {
+        if (f + kAhead < n && ready[f + kAhead]) {
+          const auto& ring = solid.faces[f + kAhead].rings[0].vertices;
+          for (std::size_t i = 0; i < ring.size() && ring.size() <= kAhead; ++i)
+            edges.prefetch(ring[i], ring[i + 1 < ring.size() ? i + 1 : 0]);
+        }
+        if (!ready[f]) continue;
+        if (plain[f]) {
+          enter_face_edges(edges, static_cast<FaceIndex>(f), solid.faces[f].rings, nullptr, {});
+          continue;
+        }
+        const Loops& loops = chunk.loops[special];
+        enter_face_edges(edges, static_cast<FaceIndex>(f), solid.faces[f].rings,
+                         loops.size() ? &loops : nullptr, chunk.lines[special]);
+        ++special;
       }
-      if (!ready[f]) continue;
-      if (plain[f]) {
-        enter_face_edges(edges, static_cast<FaceIndex>(f), solid.faces[f].rings, nullptr, {});
-        continue;
-      }
-      const Loops& loops = chunk.loops[special];
-      enter_face_edges(edges, static_cast<FaceIndex>(f), solid.faces[f].rings,
-                       loops.size() ? &loops : nullptr, chunk.lines[special]);
-      ++special;
+      chunk = Chunk{};
     }
-    chunk = Chunk{};
   }
-  twins.wait();
-  diagnostics.append(twin_diagnostics);
   for (std::vector<SolidDiagnostic>& found : face_diagnostics) diagnostics.append(found);
 
   report_non_manifold(edges, face_tags, vertices, diagnostics);
@@ -361,6 +377,8 @@ SolidBuildResult SolidBuilder::build() const {
       orient_faces(solid.faces, solid.planes, valid, areas, face_tags, edges, vertices, options, diagnostics);
   solid.crease_angle_deg = options.crease_angle_deg;
   build_edge_table(solid, edges, valid, sizes, lines_, vertices, options, diagnostics);
+  twins.wait();  // before the vertex table gives up its positions
+  diagnostics.insert(twins_at, twin_diagnostics);
   solid.vertices = vertices.input_of.empty() ? positions_ : std::move(vertices.kept);
   // Triangles folded flat onto each other: in one plane exactly, on the same side of their edge.
   constexpr std::size_t kChunkEdges = 16384;

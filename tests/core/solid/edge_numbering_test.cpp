@@ -12,6 +12,7 @@
 #include <map>
 #include <numbers>
 #include <set>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -204,6 +205,63 @@ TEST(EdgeNumbering, FansOfThousandsRoundOneVertexNumberEdgesInFirstSeenOrder) {
     EXPECT_TRUE(result.solid->closed);
     expect_edges_as_named(mesh, *result.solid);
   }
+}
+
+// Meshes of 8 192 faces or more have their edges entered by two halves of the faces side by side, the
+// second half's then taken into the first's table (edge_table.cpp, enter_plain_faces): the same contract.
+TEST(EdgeNumbering, LargeMeshesEnteredByHalvesNumberEdgesInFirstSeenOrder) {
+  for (unsigned seed = 41; seed <= 44; ++seed) {
+    test::Rng rng(seed);
+    const bool quads = seed % 2 == 0;
+    Mesh mesh = shuffled_torus(rng, quads ? 180 : 130, quads ? 60 : 40, quads);
+    if (seed > 42) {  // open: every fifth face left out
+      Mesh open{mesh.points, {}};
+      for (std::size_t f = 0; f < mesh.faces.size(); ++f)
+        if (f % 5 != 0) open.faces.push_back(mesh.faces[f]);
+      mesh = open;
+    }
+    ASSERT_GE(mesh.faces.size(), 8192u);
+    const SolidBuildResult result = build(mesh);
+    ASSERT_TRUE(result.ok()) << "seed " << seed;
+    EXPECT_EQ(result.solid->closed, seed <= 42);
+    expect_edges_as_named(mesh, *result.solid);
+  }
+  test::Rng rng(45);
+  const Mesh cone = double_cone(rng, 5000, true);  // one hub's fan in each half's table
+  const SolidBuildResult result = build(cone);
+  ASSERT_TRUE(result.ok());
+  expect_edges_as_named(cone, *result.solid);
+}
+
+// An edge of three faces in a large mesh, its first use in the first half and the fin's in the second,
+// and another whose three uses all lie in the second half: each reported with its faces in order, as
+// face after face; and a vertex at another's position reported before them, in the vertex stage's place.
+TEST(EdgeNumbering, LargeMeshesReportEdgesOfThreeFacesAndTwinVerticesInOrder) {
+  test::Rng rng(46);
+  Mesh mesh = shuffled_torus(rng, 120, 40, false);
+  const std::size_t n = mesh.faces.size();
+  mesh.points.push_back({9, 9, 9});
+  const auto fin = static_cast<VertexIndex>(mesh.points.size() - 1);
+  mesh.points.push_back(mesh.points[5]);  // a twin of vertex 5, on no face
+  const std::size_t late = n - 10;
+  for (const std::size_t f : {std::size_t{0}, late}) {
+    const VertexIndex a = mesh.faces[f][0][0], b = mesh.faces[f][0][1];
+    mesh.faces.push_back({{a, b, fin}});
+  }
+  const SolidBuildResult result = build(mesh);
+  ASSERT_FALSE(result.ok());
+  std::vector<std::string> codes, fins;
+  for (const SolidDiagnostic& d : result.diagnostics) {
+    codes.push_back(d.code);
+    if (d.code == "non-manifold-edge") fins.push_back(d.message);
+  }
+  ASSERT_EQ(fins.size(), 2u);
+  EXPECT_EQ(codes.front(), "duplicate-vertex");
+  EXPECT_NE(fins[0].find("(1, "), std::string::npos) << fins[0];
+  EXPECT_NE(fins[0].find(", " + std::to_string(n + 1) + ")"), std::string::npos) << fins[0];
+  EXPECT_NE(fins[1].find(", " + std::to_string(late + 1) + ", " + std::to_string(n + 2) + ")"),
+            std::string::npos)
+      << fins[1];
 }
 
 }  // namespace
