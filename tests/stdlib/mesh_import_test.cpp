@@ -320,6 +320,53 @@ TEST(MeshImportRepair, RepeatedDegenerateDuplicateAndMergedVertices) {
   }
 }
 
+// A mesh large enough that its vertices are welded in two shares side by side: 14 vertices repeated at
+// the end of the list (one as "-0 0 -0" for "0 0 0"), each used by a face, are merged into their first,
+// and reported in the file's order — ten, then how many more.
+TEST(MeshImportRepair, ManyVerticesWeldedInSharesAsInOrder) {
+  constexpr int n = 200;
+  std::vector<std::string> v, f;
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j)
+      v.push_back(std::to_string(i) + " " + std::to_string(j) + " " + std::to_string((i * j) % 7));
+  auto at = [](int i, int j) { return i * n + j; };
+  std::map<int, int> copy_of;  // original vertex → its repeat's number
+  for (int k = 0; k < 14; ++k) {
+    const int original = k == 0 ? 0 : 2'731 * k + 17;
+    copy_of[original] = static_cast<int>(v.size());
+    v.push_back(k == 0 ? "-0 0 -0" : v[static_cast<std::size_t>(original)]);
+  }
+  auto named = [&](int vertex) {  // the first face naming an original vertex names its repeat
+    const auto it = copy_of.find(vertex);
+    if (it == copy_of.end() || it->second < 0) return std::to_string(vertex);
+    const int repeat = it->second;
+    it->second = -1;
+    return std::to_string(repeat);
+  };
+  for (int i = 0; i + 1 < n; ++i)
+    for (int j = 0; j + 1 < n; ++j) {
+      f.push_back("3 " + named(at(i, j)) + " " + named(at(i + 1, j)) + " " + named(at(i + 1, j + 1)));
+      f.push_back("3 " + named(at(i, j)) + " " + named(at(i + 1, j + 1)) + " " + named(at(i, j + 1)));
+    }
+  const ImportedMesh m = import_off(off(v, f), "grid.off");
+  expect_shape(m, n * n, f.size(), 3 * (n - 1) * (n - 1) + 2 * (n - 1), false);
+  std::vector<std::string> merged;
+  for (const MeshProblem& p : m.warnings)
+    if (p.message.find("merged them") != std::string::npos ||
+        p.message.find("[merged-vertex]") != std::string::npos)
+      merged.push_back(p.message);
+  ASSERT_EQ(merged.size(), 11u) << all_warnings(m);
+  for (int k = 0; k < 10; ++k) {
+    const int original = k == 0 ? 0 : 2'731 * k + 17;
+    EXPECT_NE(merged[static_cast<std::size_t>(k)].find("vertex " + std::to_string(n * n + k) +
+                                                       " is at the same position as vertex " +
+                                                       std::to_string(original) + ";"),
+              std::string::npos)
+        << merged[static_cast<std::size_t>(k)];
+  }
+  EXPECT_NE(merged[10].find("4 more warnings of this kind"), std::string::npos) << merged[10];
+}
+
 TEST(MeshImportRepair, NonPlanarQuadIsSplit) {
   const ImportedMesh m = import_off(off({"0 0 0", "1 0 0", "1 1 0.2", "0 1 0"}, {"4 0 1 2 3"}), "q.off");
   expect_shape(m, 4, 2, 5, false);  // 4 boundary edges + the diagonal
