@@ -190,12 +190,14 @@ class Builder {
     std::vector<char> merged(shares, 0);
     parallel_chunks(shares, threads, [&](std::size_t k) {
       ExactPointIndex first(n / shares + n / 16);
+      bool any = false;  // stored once: the shares' flags share a cache line
       for (std::size_t i = 0; i < n; ++i) {
         if (shares > 1 && ExactPointIndex::share_of(positions_[i], shares) != k) continue;
         canon_[i] = first.insert(positions_[i], static_cast<std::uint32_t>(i),
                                  [&](std::uint32_t j) { return positions_[j]; });
-        merged[k] = merged[k] || canon_[i] != i;
+        any = any || canon_[i] != i;
       }
+      merged[k] = any;
     });
     if (std::find(merged.begin(), merged.end(), 1) == merged.end()) return;
     std::vector<bool> used(n, false);

@@ -33,8 +33,10 @@ std::vector<std::uint32_t> morton_order(std::span<const Point3> points) {
   const unsigned threads = threads_for(n, 2 * kLocalityPart, 0);
   std::vector<Box3> part_box(part_count);
   parallel_chunks(part_count, threads, [&](std::size_t k) {
+    Box3 part;  // stored once: the parts' boxes share cache lines
     for (std::size_t i = k * kLocalityPart; i < std::min(n, (k + 1) * kLocalityPart); ++i)
-      part_box[k].include(points[i]);
+      part.include(points[i]);
+    part_box[k] = part;
   });
   Box3 box;  // by coordinates: an empty part's box changes nothing
   for (const Box3& b : part_box) {

@@ -104,29 +104,32 @@ bool read_off_fast(std::string_view text, const std::string& name, const MeshImp
   raw.vertices.resize(n_vertices);  // backed by data: the records are there
   parallel_chunks(parts.size(), threads, [&](std::size_t k) {
     Part& part = read[k];
+    // Read into locals, stored once: the parts lie side by side, their ends sharing cache lines.
+    bool ok = part.ok;
+    RawMesh faces;
     FastCursor part_in(parts[k], part.first_line, '#');
     std::size_t r = part.first_record;
-    for (; part.ok && part_in.next_record(); ++r) {
+    for (; ok && part_in.next_record(); ++r) {
       const Source where{0, part_in.line(), part_in.column(), -1};
       if (r < n_vertices) {
         Point3 p;
-        part.ok = part_in.real(p.x) && part_in.real(p.y) && part_in.real(p.z);
+        ok = part_in.real(p.x) && part_in.real(p.y) && part_in.real(p.z);
         part_in.skip_line();  // extras (normal, colour) ignored
         raw.vertices[r] = {p, where};
         continue;
       }
       std::uint64_t n = 0, v = 0;
-      part.ok = part_in.index(n);
-      for (std::uint64_t i = 0; part.ok && i < n; ++i) {
-        part.ok = part_in.index(v) && v < n_vertices;
-        part.faces.face_vertices.push_back(static_cast<std::uint32_t>(v));
+      ok = part_in.index(n);
+      for (std::uint64_t i = 0; ok && i < n; ++i) {
+        ok = part_in.index(v) && v < n_vertices;
+        faces.face_vertices.push_back(static_cast<std::uint32_t>(v));
       }
       double colour = 0;
-      for (int extras = 0; part.ok && !part_in.end_of_line(); ++extras)
-        part.ok = extras < 4 && part_in.real(colour);
-      part.faces.end_face(where);
+      for (int extras = 0; ok && !part_in.end_of_line(); ++extras) ok = extras < 4 && part_in.real(colour);
+      faces.end_face(where);
     }
-    part.ok = part.ok && r == part.first_record + part.counts.records;
+    part.ok = ok && r == part.first_record + part.counts.records;
+    part.faces = std::move(faces);
   });
 
   // The parts' faces joined in order, each part copied side by side into its place.

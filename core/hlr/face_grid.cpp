@@ -117,11 +117,12 @@ FaceGrid::FaceGrid(const FrameSetup& setup, const Rect2& domain, unsigned thread
   std::vector<std::vector<std::uint32_t>> cells_of(chunks);
   std::vector<std::uint32_t> first_cell(occluders.size());  // in its chunk's list
   parallel_chunks(chunks, threads_for(occluders.size(), 2 * kChunk, threads), [&](std::size_t k) {
+    std::vector<std::uint32_t> cells;  // moved in once: the chunks' lists share cache lines
     for (std::size_t i = k * kChunk; i < std::min(occluders.size(), (k + 1) * kChunk); ++i) {
-      first_cell[i] = static_cast<std::uint32_t>(cells_of[k].size());
-      for_cells(occluders[i],
-                [&](std::size_t cell) { cells_of[k].push_back(static_cast<std::uint32_t>(cell)); });
+      first_cell[i] = static_cast<std::uint32_t>(cells.size());
+      for_cells(occluders[i], [&](std::size_t cell) { cells.push_back(static_cast<std::uint32_t>(cell)); });
     }
+    cells_of[k] = std::move(cells);
   });
   for (const std::vector<std::uint32_t>& chunk : cells_of)
     for (const std::uint32_t cell : chunk) ++cell_start_[cell + 1];

@@ -210,12 +210,14 @@ std::size_t clip_candidates(FrameSetup& setup, std::size_t from, const Camera& c
     constexpr std::size_t kPart = 16384;
     std::vector<Rect2> part_domain((n + kPart - 1) / kPart, Rect2::none());
     parallel_chunks(part_domain.size(), threads_for(n, 2 * kPart, threads), [&](std::size_t k) {
+      Rect2 part = Rect2::none();  // stored once: the parts' rectangles share cache lines
       for (std::size_t i = from + k * kPart; i < from + std::min(n, (k + 1) * kPart); ++i) {
         Candidate& c = setup.candidates[i];
         set_picture_tolerance(c, camera, setup.length_tolerance);
-        part_domain[k].include(c.pic0);
-        part_domain[k].include(c.pic1);
+        part.include(c.pic0);
+        part.include(c.pic1);
       }
+      part_domain[k] = part;
     });
     for (const Rect2& part : part_domain)
       domain.include({part.xmin, part.ymin}), domain.include({part.xmax, part.ymax});

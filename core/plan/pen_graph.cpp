@@ -177,7 +177,8 @@ PenGraph build_pen_graph(std::span<const GridSegment> segments, double tolerance
   std::vector<std::vector<GraphEdge>> part_raw((pieces.size() + kPartPieces - 1) / kPartPieces);
   parallel_chunks(part_raw.size(), threads_for(pieces.size(), 2 * kPartPieces, threads), [&](std::size_t k) {
     std::vector<Split> splits;
-    std::vector<GraphEdge>& raw = part_raw[k];  // sub-pieces, u < v, possibly repeated
+    // Sub-pieces, u < v, possibly repeated; moved in once: the parts' lists share cache lines.
+    std::vector<GraphEdge> raw;
     const std::size_t begin = k * kPartPieces, end = std::min(pieces.size(), begin + kPartPieces);
     raw.reserve((end - begin) + (end - begin) / 4);
     auto add_edge = [&](std::uint32_t a, std::uint32_t b) {
@@ -239,6 +240,7 @@ PenGraph build_pen_graph(std::span<const GridSegment> segments, double tolerance
       }
       add_edge(prev, piece.v);
     }
+    part_raw[k] = std::move(raw);
   });
   // 4. Deduplicate: bucket the sub-pieces by their lower vertex (counting sort, stable, read from the
   //    parts in order), drop repeats of the upper one within each bucket. Edges come out ordered by

@@ -255,11 +255,13 @@ class Finder {
     const std::size_t part_count = (n + kPart - 1) / kPart;
     std::vector<Box3> part_box(part_count);
     parallel_chunks(part_count, threads_for(n, 2 * kPart, 0), [&](std::size_t k) {
+      Box3 box;  // stored once: the parts' boxes share cache lines
       for (std::size_t f = k * kPart; f < std::min(n, (k + 1) * kPart); ++f) {
         const FaceInfo& b = info_[f];  // grown by the tolerance
-        part_box[k].include({b.lo[0], b.lo[1], b.lo[2]});
-        part_box[k].include({b.hi[0], b.hi[1], b.hi[2]});
+        box.include({b.lo[0], b.lo[1], b.lo[2]});
+        box.include({b.hi[0], b.hi[1], b.hi[2]});
       }
+      part_box[k] = box;
     });
     Box3 all;
     for (const Box3& b : part_box) all.include(b.lo), all.include(b.hi);  // no part is empty
@@ -320,12 +322,16 @@ class Finder {
     std::vector<std::vector<FaceIndex>> part_big(part_count);
     std::vector<int> part_reach(part_count, 0);
     parallel_chunks(part_count, threads_for(n, 2 * kPart, 0), [&](std::size_t k) {
+      std::vector<FaceIndex> found;  // stored once: the parts' results share cache lines
+      int reach = 0;
       for (std::size_t r = k * kPart; r < std::min(n, (k + 1) * kPart); ++r) {
         if (is_big(r))
-          part_big[k].push_back(face_at[r]);
+          found.push_back(face_at[r]);
         else
-          part_reach[k] = std::max(part_reach[k], cells[r].hi[2] - cells[r].lo[2]);
+          reach = std::max(reach, cells[r].hi[2] - cells[r].lo[2]);
       }
+      part_big[k] = std::move(found);
+      part_reach[k] = reach;
     });
     std::vector<FaceIndex> big;
     for (const std::vector<FaceIndex>& found : part_big) big.insert(big.end(), found.begin(), found.end());
