@@ -174,37 +174,19 @@ class Builder {
     const std::size_t n = raw_.vertices.size();
     canon_.resize(n);
     positions_.resize(n);
-    constexpr std::size_t kPart = 16384;
-    const unsigned threads = threads_for(n, 2 * kPart, 0);
-    parallel_chunks((n + kPart - 1) / kPart, threads, [&](std::size_t k) {
-      for (std::size_t i = k * kPart; i < std::min(n, (k + 1) * kPart); ++i) {
-        positions_[i] = raw_.vertices[i].position;
-        canon_[i] = static_cast<std::uint32_t>(i);
-      }
-    });
-    if (raw_.welded_by_format) return;  // welded while read: every vertex is its own
-    // Each vertex's first at its position, found in two shares of the positions side by side (equal
-    // ones fall in the same share; each share takes its vertices in order). n vertices were read, so
-    // the tables are backed by data.
-    const std::size_t shares = threads == 1 ? 1 : 2;
-    std::vector<char> merged(shares, 0);
-    parallel_chunks(shares, threads, [&](std::size_t k) {
-      ExactPointIndex first(n / shares + n / 16);
-      bool any = false;  // stored once: the shares' flags share a cache line
-      for (std::size_t i = 0; i < n; ++i) {
-        if (shares > 1 && ExactPointIndex::share_of(positions_[i], shares) != k) continue;
-        canon_[i] = first.insert(positions_[i], static_cast<std::uint32_t>(i),
-                                 [&](std::uint32_t j) { return positions_[j]; });
-        any = any || canon_[i] != i;
-      }
-      merged[k] = any;
-    });
-    if (std::find(merged.begin(), merged.end(), 1) == merged.end()) return;
+    for (std::size_t i = 0; i < n; ++i) positions_[i] = raw_.vertices[i].position;
+    if (raw_.welded_by_format) {  // welded while read: every vertex is its own
+      for (std::size_t i = 0; i < n; ++i) canon_[i] = static_cast<std::uint32_t>(i);
+      return;
+    }
     std::vector<bool> used(n, false);
     for (std::uint32_t v : raw_.face_vertices) used[v] = true;
     for (const RawLine& l : raw_.lines) used[l.a] = used[l.b] = true;
+    ExactPointIndex first(n);  // n vertices were read, so this is backed by data
     for (std::size_t i = 0; i < n; ++i) {
-      const std::uint32_t j = canon_[i];
+      const std::uint32_t j = first.insert(positions_[i], static_cast<std::uint32_t>(i),
+                                           [&](std::uint32_t k) { return positions_[k]; });
+      canon_[i] = j;
       if (j != i && used[i])
         warnings_.add("merged-vertex",
                       at(raw_.vertices[i].where,

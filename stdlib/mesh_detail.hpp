@@ -73,12 +73,6 @@ struct RawMesh {
 class ExactPointIndex {
  public:
   explicit ExactPointIndex(std::size_t expected = 0);
-  // Which of `shares` (a power of two) indexes p belongs in, where points are indexed in shares side by
-  // side: equal points always in the same.
-  static std::size_t share_of(Point3 p, std::size_t shares) {
-    return static_cast<std::size_t>(hash_of(key_of(p)) >> 32) &
-           (shares - 1);  // the fingerprint's, not a slot's
-  }
   // The index stored for p, or `index` (now stored for p) when p is new.
   template <typename PointAt>
   std::uint32_t insert(Point3 p, std::uint32_t index, const PointAt& point_at) {

@@ -320,10 +320,10 @@ TEST(MeshImportRepair, RepeatedDegenerateDuplicateAndMergedVertices) {
   }
 }
 
-// A mesh large enough that its vertices are welded in two shares side by side: 14 vertices repeated at
-// the end of the list (one as "-0 0 -0" for "0 0 0"), each used by a face, are merged into their first,
-// and reported in the file's order — ten, then how many more.
-TEST(MeshImportRepair, ManyVerticesWeldedInSharesAsInOrder) {
+// A large mesh (in spatial order to the builder) with 14 vertices repeated at the end of the list (one as
+// "-0 0 -0" for "0 0 0"), each used by a face: merged into their first, and reported in the file's order —
+// ten, then how many more.
+TEST(MeshImportRepair, ManyRepeatedVerticesMergedAndReportedInOrder) {
   constexpr int n = 200;
   std::vector<std::string> v, f;
   for (int i = 0; i < n; ++i)
