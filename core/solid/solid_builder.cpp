@@ -332,9 +332,9 @@ SolidBuildResult SolidBuilder::build() const {
                     vertex_count = vertices.positions().size();
   std::vector<std::vector<SolidDiagnostic>> face_diagnostics(chunks.size());
   // Where every face's rings are its loops and no line is to be added (a mesh file, a generator), the
-  // edges are entered by halves side by side; else face after face.
+  // edges of 8 192 faces or more are entered by halves side by side; else face after face.
   const bool by_halves =
-      lines_.empty() && threads_for(n, 2 * kChunkFaces, 0) != 1 &&
+      lines_.empty() && threads_for(n, 4 * kChunkFaces, 0) != 1 &&
       std::all_of(chunks.begin(), chunks.end(), [](const Chunk& chunk) { return chunk.faces.empty(); });
   EdgeEntries edges(by_halves ? 0 : expected_entries, vertex_count);
   if (by_halves) {
