@@ -110,6 +110,13 @@ void expect_edges_as_named(const Mesh& mesh, const Solid& solid) {
   }
 }
 
+// Builds `mesh`, which must be valid, and checks the contract on it.
+void expect_built_as_named(const Mesh& mesh) {
+  const SolidBuildResult result = build(mesh);
+  ASSERT_TRUE(result.ok());
+  expect_edges_as_named(mesh, *result.solid);
+}
+
 TEST(EdgeNumbering, ShuffledClosedMeshesNumberEdgesInFirstSeenOrder) {
   for (unsigned seed = 1; seed <= 6; ++seed) {
     test::Rng rng(seed);
@@ -143,9 +150,7 @@ TEST(EdgeNumbering, FacesWithHolesNumberTheirHoleEdgesAfterTheOutline) {
   mesh.points = {{0, 0, 0}, {4, 0, 0}, {4, 4, 0}, {0, 4, 0}, {1, 1, 0}, {1, 3, 0},
                  {3, 3, 0}, {3, 1, 0}, {0, 0, 1}, {4, 0, 1}, {4, 4, 1}};
   mesh.faces = {{{0, 1, 2, 3}, {4, 5, 6, 7}}, {{8, 9, 10}}};
-  const SolidBuildResult result = build(mesh);
-  ASSERT_TRUE(result.ok());
-  expect_edges_as_named(mesh, *result.solid);
+  expect_built_as_named(mesh);
 }
 
 TEST(EdgeNumbering, AnEdgeOfThreeFacesIsReportedWithItsFaces) {
@@ -227,10 +232,7 @@ TEST(EdgeNumbering, LargeMeshesEnteredByHalvesNumberEdgesInFirstSeenOrder) {
     expect_edges_as_named(mesh, *result.solid);
   }
   test::Rng rng(45);
-  const Mesh cone = double_cone(rng, 5000, true);  // one hub's fan in each half's table
-  const SolidBuildResult result = build(cone);
-  ASSERT_TRUE(result.ok());
-  expect_edges_as_named(cone, *result.solid);
+  expect_built_as_named(double_cone(rng, 5000, true));  // one hub's fan in each half's table
 }
 
 // An edge of three faces in a large mesh, its first use in the first half and the fin's in the second,
