@@ -7,6 +7,7 @@
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
+#include <algorithm>
 #include <cstddef>
 
 namespace hlr {
@@ -39,6 +40,16 @@ void parallel_chunks(std::size_t count, unsigned threads, const Body& body) {
     tbb::task_arena arena(static_cast<int>(threads));
     arena.execute(run);
   }
+}
+
+// Calls body(i) once for every i in [0, count), by parts of `part` indices side by side (on the calling
+// thread below two parts' worth, as threads_for). A body that gathers a per-part result should use
+// parallel_chunks instead, and store it once: parts' results side by side share cache lines.
+template <typename Body>
+void parallel_indices(std::size_t count, std::size_t part, const Body& body) {
+  parallel_chunks((count + part - 1) / part, threads_for(count, 2 * part, 0), [&](std::size_t k) {
+    for (std::size_t i = k * part; i < std::min(count, (k + 1) * part); ++i) body(i);
+  });
 }
 
 }  // namespace hlr

@@ -475,22 +475,17 @@ class Builder {
     SolidBuilder builder(build_options);
     // A large mesh's lists are filled by parts side by side.
     constexpr std::size_t kPart = 16384;
-    auto by_parts = [](std::size_t count, auto&& body) {
-      parallel_chunks((count + kPart - 1) / kPart, threads_for(count, 2 * kPart, 0), [&](std::size_t k) {
-        for (std::size_t i = k * kPart; i < std::min(count, (k + 1) * kPart); ++i) body(i);
-      });
-    };
     const std::size_t nv = kept.size();
     std::vector<Point3> points(nv);
     raw_of = kept;
     if (spatial) {
-      by_parts(nv, [&](std::size_t i) { points[i] = raw_.vertices[kept[i]].position; });
+      parallel_indices(nv, kPart, [&](std::size_t i) { points[i] = raw_.vertices[kept[i]].position; });
       const std::vector<std::uint32_t> order = morton_order(points);
-      by_parts(nv, [&](std::size_t i) { raw_of[i] = kept[order[i]]; });
+      parallel_indices(nv, kPart, [&](std::size_t i) { raw_of[i] = kept[order[i]]; });
     }
     std::vector<VertexIndex> index_of(raw_.vertices.size(), 0);  // raw vertex → builder vertex
     std::vector<std::int64_t> tags(nv);
-    by_parts(nv, [&](std::size_t i) {
+    parallel_indices(nv, kPart, [&](std::size_t i) {
       index_of[raw_of[i]] = static_cast<VertexIndex>(i);
       points[i] = raw_.vertices[raw_of[i]].position;
       tags[i] = make_tag(TagKind::Vertex, raw_of[i]);
@@ -501,14 +496,16 @@ class Builder {
     builder.label_indexed_vertices([&](VertexIndex i) { return vertex_name(raw_of[i]); });
     if (spatial) {
       std::vector<std::uint32_t> vertices(out_vertices_.size());
-      by_parts(vertices.size(), [&](std::size_t i) { vertices[i] = index_of[out_vertices_[i]]; });
+      parallel_indices(vertices.size(), kPart,
+                       [&](std::size_t i) { vertices[i] = index_of[out_vertices_[i]]; });
       std::vector<std::uint32_t> ordered;
       std::vector<std::size_t> ends;
       order_faces_by_least_vertex(vertices, out_ends_, nv, ordered, ends);
       release(vertices);
       builder.add_indexed_polygons(ordered, ends, make_tag(TagKind::Face, 0));
     } else {
-      by_parts(out_vertices_.size(), [&](std::size_t i) { out_vertices_[i] = index_of[out_vertices_[i]]; });
+      parallel_indices(out_vertices_.size(), kPart,
+                       [&](std::size_t i) { out_vertices_[i] = index_of[out_vertices_[i]]; });
       builder.add_indexed_polygons(out_vertices_, out_ends_, make_tag(TagKind::Face, 0));
     }
     for (std::size_t i = 0; i < lines_.size(); ++i)

@@ -29,10 +29,8 @@ std::uint32_t spread_bits(std::uint32_t v) {
 
 std::vector<std::uint32_t> morton_order(std::span<const Point3> points) {
   const std::size_t n = points.size();
-  const std::size_t part_count = (n + kLocalityPart - 1) / kLocalityPart;
-  const unsigned threads = threads_for(n, 2 * kLocalityPart, 0);
-  std::vector<Box3> part_box(part_count);
-  parallel_chunks(part_count, threads, [&](std::size_t k) {
+  std::vector<Box3> part_box((n + kLocalityPart - 1) / kLocalityPart);
+  parallel_chunks(part_box.size(), threads_for(n, 2 * kLocalityPart, 0), [&](std::size_t k) {
     Box3 part;  // stored once: the parts' boxes share cache lines
     for (std::size_t i = k * kLocalityPart; i < std::min(n, (k + 1) * kLocalityPart); ++i)
       part.include(points[i]);
@@ -51,21 +49,16 @@ std::vector<std::uint32_t> morton_order(std::span<const Point3> points) {
   auto cell = [](double t) {  // NaN (a non-finite vertex, refused later) to 0
     return t >= 0 ? static_cast<std::uint32_t>(std::min(t, 1023.0)) : 0u;
   };
-  parallel_chunks(part_count, threads, [&](std::size_t k) {
-    for (std::size_t i = k * kLocalityPart; i < std::min(n, (k + 1) * kLocalityPart); ++i) {
-      const Point3 p = points[i];
-      const std::uint64_t code = spread_bits(cell((p.x - lo.x) * scale[0])) |
-                                 spread_bits(cell((p.y - lo.y) * scale[1])) << 1 |
-                                 spread_bits(cell((p.z - lo.z) * scale[2])) << 2;
-      keyed[i] = code << 32 | i;
-    }
+  parallel_indices(n, kLocalityPart, [&](std::size_t i) {
+    const Point3 p = points[i];
+    const std::uint64_t code = spread_bits(cell((p.x - lo.x) * scale[0])) |
+                               spread_bits(cell((p.y - lo.y) * scale[1])) << 1 |
+                               spread_bits(cell((p.z - lo.z) * scale[2])) << 2;
+    keyed[i] = code << 32 | i;
   });
   sort_by_30_bits(keyed, 32);
   std::vector<std::uint32_t> order(n);
-  parallel_chunks(part_count, threads, [&](std::size_t k) {
-    for (std::size_t i = k * kLocalityPart; i < std::min(n, (k + 1) * kLocalityPart); ++i)
-      order[i] = static_cast<std::uint32_t>(keyed[i]);
-  });
+  parallel_indices(n, kLocalityPart, [&](std::size_t i) { order[i] = static_cast<std::uint32_t>(keyed[i]); });
   return order;
 }
 
@@ -74,14 +67,11 @@ std::vector<std::uint32_t> faces_by_least_vertex(std::span<const std::uint32_t> 
                                                  std::size_t vertex_count) {
   const std::size_t n = ends.size();
   std::vector<std::uint32_t> least(n);
-  parallel_chunks((n + kLocalityPart - 1) / kLocalityPart, threads_for(n, 2 * kLocalityPart, 0),
-                  [&](std::size_t k) {
-                    for (std::size_t f = k * kLocalityPart; f < std::min(n, (k + 1) * kLocalityPart); ++f) {
-                      const std::size_t begin = f == 0 ? 0 : ends[f - 1];
-                      least[f] = *std::min_element(vertices.begin() + static_cast<std::ptrdiff_t>(begin),
-                                                   vertices.begin() + static_cast<std::ptrdiff_t>(ends[f]));
-                    }
-                  });
+  parallel_indices(n, kLocalityPart, [&](std::size_t f) {
+    const std::size_t begin = f == 0 ? 0 : ends[f - 1];
+    least[f] = *std::min_element(vertices.begin() + static_cast<std::ptrdiff_t>(begin),
+                                 vertices.begin() + static_cast<std::ptrdiff_t>(ends[f]));
+  });
   // A counting sort by that vertex (stable: faces at one vertex keep the file's order).
   std::vector<std::uint32_t> first(vertex_count + 1, 0), order(n);
   for (std::uint32_t v : least) ++first[v + 1];
@@ -102,15 +92,12 @@ void order_faces_by_least_vertex(std::span<const std::uint32_t> vertices, std::s
     ordered_ends[k] = end;
   }
   ordered.resize(vertices.size());
-  parallel_chunks(
-      (n + kLocalityPart - 1) / kLocalityPart, threads_for(n, 2 * kLocalityPart, 0), [&](std::size_t k) {
-        for (std::size_t i = k * kLocalityPart; i < std::min(n, (k + 1) * kLocalityPart); ++i) {
-          const std::size_t f = order[i], begin = f == 0 ? 0 : ends[f - 1];
-          std::copy(vertices.begin() + static_cast<std::ptrdiff_t>(begin),
-                    vertices.begin() + static_cast<std::ptrdiff_t>(ends[f]),
-                    ordered.begin() + static_cast<std::ptrdiff_t>(i == 0 ? 0 : ordered_ends[i - 1]));
-        }
-      });
+  parallel_indices(n, kLocalityPart, [&](std::size_t i) {
+    const std::size_t f = order[i], begin = f == 0 ? 0 : ends[f - 1];
+    std::copy(vertices.begin() + static_cast<std::ptrdiff_t>(begin),
+              vertices.begin() + static_cast<std::ptrdiff_t>(ends[f]),
+              ordered.begin() + static_cast<std::ptrdiff_t>(i == 0 ? 0 : ordered_ends[i - 1]));
+  });
 }
 
 }  // namespace hlr::stdlib::mesh_detail

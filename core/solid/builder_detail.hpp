@@ -231,12 +231,18 @@ class EdgeEntries {
 void enter_face_edges(EdgeEntries& edges, FaceIndex face, SmallVector<Ring, 1>& rings, const Loops* loops,
                       std::span<const std::pair<VertexIndex, VertexIndex>> lines);
 
-// Enters the edges of the valid faces (ready[f] != 0), all with their rings as their loops and no on-face
-// lines, as enter_face_edges face after face would — the same numbers, uses and order — by two halves of
-// the faces side by side, the second half's entries then absorbed. `edges` is empty, and left without its
-// lookup table.
-void enter_plain_faces(EdgeEntries& edges, std::vector<Face>& faces, const std::vector<char>& ready,
-                       std::size_t expected_entries, std::size_t vertex_count);
+// Entering faces in order, face f asks for the slots of face f + kPrefetchFaces's edges (if valid and
+// before `end`), so that the lookups of a large table do not wait on memory one after another.
+inline constexpr std::size_t kPrefetchFaces = 8;
+void prefetch_face_edges(const EdgeEntries& edges, const std::vector<Face>& faces,
+                         const std::vector<char>& ready, std::size_t f, std::size_t end);
+
+// The edges of the valid faces (ready[f] != 0), all with their rings as their loops and no on-face lines,
+// entered as enter_face_edges face after face would — the same numbers, uses and order — by two halves of
+// the faces side by side, the second half's entries then absorbed. The table is left without its lookup
+// table.
+EdgeEntries enter_plain_faces(std::vector<Face>& faces, const std::vector<char>& ready,
+                              std::size_t expected_entries, std::size_t vertex_count);
 
 // Reports edges used by more than two faces.
 void report_non_manifold(const EdgeEntries& edges, Tags face_tags, const VertexTable& vertices,

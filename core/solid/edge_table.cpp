@@ -95,10 +95,8 @@ bool EdgeEntries::absorb(const EdgeEntries& later, std::vector<std::uint32_t>& n
   // Looked up side by side (the table is only read), then taken in in order.
   const std::size_t m = later.size();
   number.assign(m, kNoEdge);
-  constexpr std::size_t kPart = 16384;
-  parallel_chunks((m + kPart - 1) / kPart, threads_for(m, 2 * kPart, 0), [&](std::size_t k) {
-    for (std::size_t j = k * kPart; j < std::min(m, (k + 1) * kPart); ++j)
-      number[j] = find(later[static_cast<std::uint32_t>(j)].lo, later[static_cast<std::uint32_t>(j)].hi);
+  parallel_indices(m, 16384, [&](std::size_t j) {
+    number[j] = find(later[static_cast<std::uint32_t>(j)].lo, later[static_cast<std::uint32_t>(j)].hi);
   });
   for (std::size_t j = 0; j < m; ++j)
     if (number[j] != kNoEdge && (*this)[number[j]].uses + later[static_cast<std::uint32_t>(j)].uses > 2)
@@ -150,21 +148,24 @@ void enter_face_edges(EdgeEntries& edges, FaceIndex face, SmallVector<Ring, 1>& 
   }
 }
 
-void enter_plain_faces(EdgeEntries& edges, std::vector<Face>& faces, const std::vector<char>& ready,
-                       std::size_t expected_entries, std::size_t vertex_count) {
+void prefetch_face_edges(const EdgeEntries& edges, const std::vector<Face>& faces,
+                         const std::vector<char>& ready, std::size_t f, std::size_t end) {
+  if (f + kPrefetchFaces >= end || !ready[f + kPrefetchFaces]) return;
+  const auto& ring = faces[f + kPrefetchFaces].rings[0].vertices;
+  for (std::size_t i = 0; i < ring.size() && ring.size() <= kPrefetchFaces; ++i)
+    edges.prefetch(ring[i], ring[i + 1 < ring.size() ? i + 1 : 0]);
+}
+
+EdgeEntries enter_plain_faces(std::vector<Face>& faces, const std::vector<char>& ready,
+                              std::size_t expected_entries, std::size_t vertex_count) {
   const std::size_t n = faces.size(), half = n / 2;
   // Each half's table sized for a little over half the entries, the first one's store for all of them.
   const std::size_t indexed = expected_entries / 2 + expected_entries / 16;
-  edges = EdgeEntries(expected_entries, vertex_count, indexed);
+  EdgeEntries edges(expected_entries, vertex_count, indexed);
   EdgeEntries later(indexed, vertex_count);
   auto enter = [&](EdgeEntries& table, std::size_t from, std::size_t to) {
-    constexpr std::size_t kAhead = 8;  // faces whose edges are asked for ahead (EdgeEntries::prefetch)
     for (std::size_t f = from; f < to; ++f) {
-      if (f + kAhead < to && ready[f + kAhead]) {
-        const auto& ring = faces[f + kAhead].rings[0].vertices;
-        for (std::size_t i = 0; i < ring.size() && ring.size() <= kAhead; ++i)
-          table.prefetch(ring[i], ring[i + 1 < ring.size() ? i + 1 : 0]);
-      }
+      prefetch_face_edges(table, faces, ready, f, to);
       if (ready[f]) enter_face_edges(table, static_cast<FaceIndex>(f), faces[f].rings, nullptr, {});
     }
   };
@@ -179,18 +180,16 @@ void enter_plain_faces(EdgeEntries& edges, std::vector<Face>& faces, const std::
     edges = EdgeEntries(expected_entries, vertex_count);
     enter(edges, 0, n);
     edges.release_index();
-    return;
+    return edges;
   }
   later = EdgeEntries(0);
   // The second half's rings hold its own table's numbers.
-  constexpr std::size_t kPart = 8192;
-  const std::size_t tail = n - half;
-  parallel_chunks((tail + kPart - 1) / kPart, threads_for(tail, 2 * kPart, 0), [&](std::size_t k) {
-    for (std::size_t f = half + k * kPart; f < std::min(n, half + (k + 1) * kPart); ++f)
-      if (ready[f])
-        for (Ring& r : faces[f].rings)
-          for (std::uint32_t& e : r.edges) e = number[e];
+  parallel_indices(n - half, 8192, [&](std::size_t k) {
+    if (ready[half + k])
+      for (Ring& r : faces[half + k].rings)
+        for (std::uint32_t& e : r.edges) e = number[e];
   });
+  return edges;
 }
 
 void report_non_manifold(const EdgeEntries& edges, Tags face_tags, const VertexTable& vertices,

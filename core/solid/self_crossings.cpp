@@ -287,13 +287,11 @@ class Finder {
     // and a cell's lie near each other in cell_faces, where in a scan's own order they were spread over
     // the whole mesh and every one fetched from memory.
     std::vector<std::uint64_t> ranked(n);
-    parallel_chunks(part_count, threads_for(n, 2 * kPart, 0), [&](std::size_t k) {
-      for (std::size_t f = k * kPart; f < std::min(n, (k + 1) * kPart); ++f) {
-        const FaceInfo& c = info_[f];
-        ranked[f] = cell_key(index(c.lo[0], all.lo.x), index(c.lo[1], all.lo.y), index(c.lo[2], all.lo.z))
-                        << kCellShift |
-                    f;
-      }
+    parallel_indices(n, kPart, [&](std::size_t f) {
+      const FaceInfo& c = info_[f];
+      ranked[f] = cell_key(index(c.lo[0], all.lo.x), index(c.lo[1], all.lo.y), index(c.lo[2], all.lo.z))
+                      << kCellShift |
+                  f;
     });
     sort_by_30_bits(ranked, kCellShift);  // by cell, the face order kept within one
     // Per rank: the face's FaceInfo and the cells its grown box covers.
@@ -304,13 +302,11 @@ class Finder {
     std::vector<FaceInfo> cell_faces(n);
     std::vector<Cells> cells(n);
     constexpr std::size_t kRanks = 8192;
-    parallel_chunks((n + kRanks - 1) / kRanks, threads_for(n, 2 * kRanks, 0), [&](std::size_t k) {
-      for (std::size_t r = k * kRanks; r < std::min(n, (k + 1) * kRanks); ++r) {
-        face_at[r] = face_of(ranked[r]);
-        const FaceInfo& c = cell_faces[r] = info_[face_at[r]];
-        for (int a = 0; a < 3; ++a)
-          cells[r].lo[a] = index(c.lo[a], all.lo[a]), cells[r].hi[a] = index(c.hi[a], all.lo[a]);
-      }
+    parallel_indices(n, kRanks, [&](std::size_t r) {
+      face_at[r] = face_of(ranked[r]);
+      const FaceInfo& c = cell_faces[r] = info_[face_at[r]];
+      for (int a = 0; a < 3; ++a)
+        cells[r].lo[a] = index(c.lo[a], all.lo[a]), cells[r].hi[a] = index(c.hi[a], all.lo[a]);
     });
     constexpr int kMaxCells = 64;
     auto is_big = [&](std::size_t r) {

@@ -151,17 +151,11 @@ void SolidBuilder::add_indexed_polygons(std::span<const VertexIndex> vertices,
   if (ref0 + vertices.size() > 0xffffffffu)
     throw std::length_error("SolidBuilder: too many vertex references");
   if (ring0 + ends.size() > 0xffffffffu) throw std::length_error("SolidBuilder: too many rings");
-  // A mesh's faces, by parts side by side.
-  constexpr std::size_t kPart = 16384;
-  auto by_parts = [](std::size_t count, auto&& body) {
-    parallel_chunks((count + kPart - 1) / kPart, threads_for(count, 2 * kPart, 0), [&](std::size_t k) {
-      for (std::size_t i = k * kPart; i < std::min(count, (k + 1) * kPart); ++i) body(i);
-    });
-  };
+  constexpr std::size_t kPart = 16384;  // a mesh's faces go by parts side by side
   refs_.resize(ref0 + vertices.size());
   // A number too large to be an indexed reference is interned as text (index_ref), on this thread, in order.
   std::atomic<bool> too_large = false;
-  by_parts(vertices.size(), [&](std::size_t i) {
+  parallel_indices(vertices.size(), kPart, [&](std::size_t i) {
     if (vertices[i] < solid_detail::kIndexRef)
       refs_[ref0 + i] = solid_detail::kIndexRef | vertices[i];
     else
@@ -174,7 +168,7 @@ void SolidBuilder::add_indexed_polygons(std::span<const VertexIndex> vertices,
   face_ends_.resize(face0 + ends.size());
   const bool tagged = first_tag != -1 || !face_tags_.empty();
   if (tagged) face_tags_.resize(face0 + ends.size(), -1);  // (the earlier faces' -1 too, if none had one)
-  by_parts(ends.size(), [&](std::size_t k) {
+  parallel_indices(ends.size(), kPart, [&](std::size_t k) {
     ring_ends_[ring0 + k] = static_cast<std::uint32_t>(ref0 + ends[k]);
     face_ends_[face0 + k] = static_cast<std::uint32_t>(ring0 + k + 1);
     if (tagged) face_tags_[face0 + k] = first_tag == -1 ? -1 : first_tag + static_cast<std::int64_t>(k);
@@ -336,25 +330,20 @@ SolidBuildResult SolidBuilder::build() const {
   const bool by_halves =
       lines_.empty() && threads_for(n, 4 * kChunkFaces, 0) != 1 &&
       std::all_of(chunks.begin(), chunks.end(), [](const Chunk& chunk) { return chunk.faces.empty(); });
-  EdgeEntries edges(by_halves ? 0 : expected_entries, vertex_count);
+  EdgeEntries edges = by_halves ? enter_plain_faces(solid.faces, ready, expected_entries, vertex_count)
+                                : EdgeEntries(expected_entries, vertex_count);
   if (by_halves) {
     for (std::size_t k = 0; k < chunks.size(); ++k) face_diagnostics[k] = std::move(chunks[k].diagnostics);
     chunks.clear();
-    enter_plain_faces(edges, solid.faces, ready, expected_entries, vertex_count);
     start_twins();
   } else {
     start_twins();
-    constexpr std::size_t kAhead = 8;  // faces whose edges are asked for ahead (EdgeEntries::prefetch)
     for (std::size_t k = 0; k < chunks.size(); ++k) {
       Chunk& chunk = chunks[k];
       face_diagnostics[k] = std::move(chunk.diagnostics);
       std::size_t special = 0;
       for (std::size_t f = k * kChunkFaces; f < std::min(n, (k + 1) * kChunkFaces); ++f) {
-        if (f + kAhead < n && ready[f + kAhead]) {
-          const auto& ring = solid.faces[f + kAhead].rings[0].vertices;
-          for (std::size_t i = 0; i < ring.size() && ring.size() <= kAhead; ++i)
-            edges.prefetch(ring[i], ring[i + 1 < ring.size() ? i + 1 : 0]);
-        }
+        prefetch_face_edges(edges, solid.faces, ready, f, n);
         if (!ready[f]) continue;
         if (plain[f]) {
           enter_face_edges(edges, static_cast<FaceIndex>(f), solid.faces[f].rings, nullptr, {});
