@@ -223,6 +223,22 @@ TEST(EmbeddedPatches, EveryPatchOfAFoldedSheetIsApartPairByPair) {
   }
 }
 
+TEST(EmbeddedPatches, AWideWavySheetGrowsPatchesOfThousandsOfFaces) {
+  // 2 160 triangles facing up: patches grow past 512 faces (the size they stopped at before stop 48),
+  // and every pair in them is still apart in projection.
+  const Solid s = sheet(
+      36, 30, [](double x, double y) { return 1.5 * std::sin(0.25 * x) + std::cos(0.2 * y); },
+      [](double, double) { return Vector3{}; });
+  expect_patches_sound(s, 0.99);
+  const std::vector<std::uint32_t> patch = embedded_patches(s);
+  std::map<std::uint32_t, std::size_t> size;
+  for (std::uint32_t p : patch)
+    if (p != kNoPatch) ++size[p];
+  std::size_t largest = 0;
+  for (const auto& [id, count] : size) largest = std::max(largest, count);
+  EXPECT_GT(largest, 1024u);
+}
+
 TEST(EmbeddedPatches, EveryPatchOfABumpyMeshIsApartPairByPair) {
   for (unsigned seed = 0; seed < 4; ++seed) {
     SCOPED_TRACE(seed);
