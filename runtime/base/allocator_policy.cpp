@@ -8,6 +8,7 @@
 #include <unistd.h>
 #endif
 
+#include "runtime/base/heap_pages.hpp"
 #include "runtime/base/sanitizer_allocator.hpp"
 
 namespace hlr::runtime {
@@ -39,6 +40,8 @@ void heap_on_huge_pages(char** argv) {
   const char* before = std::getenv("GLIBC_TUNABLES");  // spelled out: the manual's test looks for it
   const std::string kept = before ? before : "";
   if (kept.find("glibc.malloc.hugetlb") != std::string::npos) return;
+  // Small pages are glibc's own default: no second start for them.
+  if (host_takes_back_free_memory()) return;
   const std::string asked = kept + (kept.empty() ? "" : ":") + "glibc.malloc.hugetlb=1";
   if (::setenv(kVariable, asked.c_str(), 1) != 0) return;
   ::execv("/proc/self/exe", argv);

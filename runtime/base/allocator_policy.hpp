@@ -18,7 +18,8 @@ void keep_freed_memory();
 // of fresh 4 KiB pages (the 64 000-box city's `check` 1.34 → 1.01 s, general code 1.26 → 0.71 s, a
 // 10⁶-triangle import rendered 3.5 → 2.2 s; peak memory up to a tenth more: bench/README.md). Returns
 // without effect when the setting is already there (the second start, or the user's own), under
-// AddressSanitizer (its own allocator), where the C library is not glibc, or when /proc/self/exe cannot
+// AddressSanitizer (its own allocator), where the C library is not glibc, on a virtual machine whose host
+// takes back freed memory (heap_pages.hpp: small pages are faster there), or when /proc/self/exe cannot
 // be executed. `hlrscript` (runtime/cli/launcher.cpp) starts the engine with the setting already there,
 // so this only acts when the engine is run directly.
 void heap_on_huge_pages(char** argv);

@@ -1,9 +1,10 @@
 // hlrscript: starts the engine (hlrscript-engine, runtime/cli/main.cpp) with its heap on transparent huge
-// pages. glibc reads glibc.malloc.hugetlb only when a process starts, and a large drawing spends a
-// quarter to two fifths of its time on first touches of 4 KiB pages (bench/README.md). The engine used
-// to execute itself again to get it, loading its 32 shared libraries twice (12 ms of a 26 ms start); this
-// program links nothing but the C library, so the second start is the only full one. The process stays
-// the same (exec): its id, signals, standard streams and exit status are the engine's.
+// pages, or on small ones on a virtual machine whose host takes back freed memory (heap_pages.hpp). glibc
+// reads glibc.malloc.hugetlb only when a process starts, and a large drawing spends a quarter to two
+// fifths of its time on first touches of 4 KiB pages (bench/README.md). The engine used to execute itself
+// again to get it, loading its 32 shared libraries twice (12 ms of a 26 ms start); this program links
+// nothing but the C library, so the second start is the only full one. The process stays the same (exec):
+// its id, signals, standard streams and exit status are the engine's.
 #include <limits.h>
 #include <unistd.h>
 
@@ -12,23 +13,26 @@
 #include <cstdlib>
 #include <cstring>
 
+#include "runtime/base/heap_pages.hpp"
+
 namespace {
 
 constexpr const char* kTunables = "GLIBC_TUNABLES";
-constexpr const char* kHugePages = "glibc.malloc.hugetlb=1";
 
-// Adds glibc.malloc.hugetlb=1 to GLIBC_TUNABLES unless a hugetlb setting (the user's own) is there.
-void ask_for_huge_pages() {
+// Adds the heap's page setting (heap_pages.hpp) to GLIBC_TUNABLES unless a hugetlb setting (the user's
+// own) is there.
+void choose_heap_pages() {
   const char* before = std::getenv(kTunables);
+  if (before != nullptr && std::strstr(before, "glibc.malloc.hugetlb") != nullptr) return;
+  const char* setting = hlr::runtime::heap_page_tunable();
   if (before == nullptr || *before == '\0') {
-    ::setenv(kTunables, kHugePages, 1);
+    ::setenv(kTunables, setting, 1);
     return;
   }
-  if (std::strstr(before, "glibc.malloc.hugetlb") != nullptr) return;
-  const std::size_t size = std::strlen(before) + 1 + std::strlen(kHugePages) + 1;
+  const std::size_t size = std::strlen(before) + 1 + std::strlen(setting) + 1;
   char* joined = static_cast<char*>(std::malloc(size));
   if (joined == nullptr) return;  // go on without: slower, not wrong
-  std::snprintf(joined, size, "%s:%s", before, kHugePages);
+  std::snprintf(joined, size, "%s:%s", before, setting);
   ::setenv(kTunables, joined, 1);
   std::free(joined);
 }
@@ -65,7 +69,7 @@ int main(int, char** argv) {
                  self, self);
     return 127;
   }
-  ask_for_huge_pages();
+  choose_heap_pages();
   ::execv(engine, argv);
   std::fprintf(stderr, "hlrscript: cannot run the engine %s: %s\n", engine, std::strerror(errno));
   return 127;
