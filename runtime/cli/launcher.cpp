@@ -1,6 +1,6 @@
 // hlrscript: starts the engine (hlrscript-engine, runtime/cli/main.cpp) with its heap on transparent huge
 // pages, or on small ones on a virtual machine whose host takes back freed memory (heap_pages.hpp). glibc
-// reads glibc.malloc.hugetlb only when a process starts, and a large drawing spends a quarter to two
+// reads glibc.malloc.hugetlb only when a process starts; elsewhere, a large drawing spent a quarter to two
 // fifths of its time on first touches of 4 KiB pages (bench/README.md). The engine used to execute itself
 // again to get it, loading its 32 shared libraries twice (12 ms of a 26 ms start); this program links
 // nothing but the C library, so the second start is the only full one. The process stays the same (exec):

@@ -1,11 +1,11 @@
 #!/usr/bin/env bash
 # The heap on transparent huge pages (runtime/base/allocator_policy.hpp): a process calling
 # heap_on_huge_pages() starts again once with glibc.malloc.hugetlb=1 added to GLIBC_TUNABLES (unless the
-# host takes back freed memory, heap_pages.hpp), keeps
-# what the user set there, leaves a hugetlb setting of the user's alone and never restarts twice; under
-# AddressSanitizer it does nothing. The heap warmer (heap_warmer.hpp) faults in the huge page past the
-# heap's use, which stays cold without it (and under AddressSanitizer, where it does nothing). Then
-# hlrscript itself: a REPL's own environment (/proc/PID/environ).
+# host takes back freed memory, heap_pages.hpp), keeps what the user set there, leaves a hugetlb setting
+# of the user's alone and never restarts twice; under AddressSanitizer it does nothing. The heap warmer
+# (heap_warmer.hpp) faults in the huge page past the heap's use, which stays cold without it (and under
+# AddressSanitizer, where it does nothing). Then hlrscript itself: a REPL's own environment
+# (/proc/PID/environ).
 # usage: allocator_policy.sh PROBE HLRSCRIPT WORKDIR SANITIZED(0|1)
 set -euo pipefail
 probe=$1 hlrscript=$2 work=$3 sanitized=$4
