@@ -39,10 +39,10 @@ void heap_on_huge_pages(char** argv) {
   constexpr const char* kVariable = "GLIBC_TUNABLES";
   const char* before = std::getenv("GLIBC_TUNABLES");  // spelled out: the manual's test looks for it
   const std::string kept = before ? before : "";
-  if (kept.find("glibc.malloc.hugetlb") != std::string::npos) return;
+  if (kept.find(kHugetlbTunable) != std::string::npos) return;
   // Small pages are glibc's own default: no second start for them.
   if (host_takes_back_free_memory()) return;
-  const std::string asked = kept + (kept.empty() ? "" : ":") + "glibc.malloc.hugetlb=1";
+  const std::string asked = kept + (kept.empty() ? "" : ":") + kHugePages;
   if (::setenv(kVariable, asked.c_str(), 1) != 0) return;
   ::execv("/proc/self/exe", argv);
   // Still here: no /proc. Go on as started, and leave the environment as it was for what we run.

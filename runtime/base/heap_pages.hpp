@@ -19,6 +19,10 @@
 namespace hlr::runtime {
 
 inline constexpr const char* kVirtioDevices = "/sys/bus/virtio/devices";
+// The glibc tunable, and its two settings.
+inline constexpr const char* kHugetlbTunable = "glibc.malloc.hugetlb";
+inline constexpr const char* kHugePages = "glibc.malloc.hugetlb=1";
+inline constexpr const char* kSmallPages = "glibc.malloc.hugetlb=0";
 
 // Whether a virtio balloon among `devices` (a folder per device, as in sysfs: `device` holds the device
 // id, `features` one '0' or '1' per feature bit) reports free pages to the host (VIRTIO_BALLOON_F_REPORTING,
@@ -56,7 +60,7 @@ inline bool host_takes_back_free_memory(const char* devices = kVirtioDevices) {
 // The glibc tunable to start the engine with: huge pages, or small ones where the host takes back freed
 // memory.
 inline const char* heap_page_tunable(const char* devices = kVirtioDevices) {
-  return host_takes_back_free_memory(devices) ? "glibc.malloc.hugetlb=0" : "glibc.malloc.hugetlb=1";
+  return host_takes_back_free_memory(devices) ? kSmallPages : kHugePages;
 }
 
 }  // namespace hlr::runtime

@@ -23,7 +23,7 @@ constexpr const char* kTunables = "GLIBC_TUNABLES";
 // own) is there.
 void choose_heap_pages() {
   const char* before = std::getenv(kTunables);
-  if (before != nullptr && std::strstr(before, "glibc.malloc.hugetlb") != nullptr) return;
+  if (before != nullptr && std::strstr(before, hlr::runtime::kHugetlbTunable) != nullptr) return;
   const char* setting = hlr::runtime::heap_page_tunable();
   if (before == nullptr || *before == '\0') {
     ::setenv(kTunables, setting, 1);
