@@ -11,6 +11,7 @@
 #include <tuple>
 #include <utility>
 
+#include "core/parallel.hpp"
 #include "core/plan/euler_strokes.hpp"
 #include "core/plan/odd_matching.hpp"
 #include "core/plan/pen_graph.hpp"
@@ -42,33 +43,61 @@ bool snap(double mm, double grid, std::int64_t& out) {
   return true;
 }
 
-std::vector<Group> snap_groups(const std::vector<PlotPiece>& pieces, double grid, std::size_t& dropped) {
-  // (pen, layer, level) → group: Visible (0) before Hidden (1) before Hatch (2), hidden levels ascending.
+// The pieces snapped and sorted into groups by (pen, layer, level): Visible (0) before Hidden (1) before
+// Hatch (2), hidden levels ascending; each group's segments in piece order. Parts of the pieces are snapped
+// side by side, each into runs of its own, and the runs joined group by group in part order: the
+// 10⁶-triangle torus's 377 000 pieces took 13 ms on one core.
+std::vector<Group> snap_groups(const std::vector<PlotPiece>& pieces, double grid, unsigned threads,
+                               std::size_t& dropped) {
   using Key = std::tuple<int, int, int>;
-  std::map<Key, std::size_t> index;
-  std::vector<Group> groups;
-  Key last_key{0, -1, 0};  // consecutive pieces mostly share their group: ask the map less
-  std::size_t last_group = 0;
-  for (const PlotPiece& p : pieces) {
-    GridSegment s;
-    if (!snap(p.a.x, grid, s.a.x) || !snap(p.a.y, grid, s.a.y) || !snap(p.b.x, grid, s.b.x) ||
-        !snap(p.b.y, grid, s.b.y) || s.a == s.b) {
-      ++dropped;
-      continue;
+  struct Run {
+    Key key;
+    std::vector<GridSegment> segments;
+  };
+  struct Part {
+    std::vector<Run> runs;  // consecutive pieces mostly share their group: a run per change of group
+    std::size_t dropped = 0;
+  };
+  constexpr std::size_t kPartPieces = 16384;
+  std::vector<Part> parts((pieces.size() + kPartPieces - 1) / kPartPieces);
+  parallel_chunks(parts.size(), threads_for(pieces.size(), 2 * kPartPieces, threads), [&](std::size_t k) {
+    Part part;  // filled here, stored once: the parts lie side by side
+    const std::size_t end = std::min(pieces.size(), (k + 1) * kPartPieces);
+    for (std::size_t i = k * kPartPieces; i < end; ++i) {
+      const PlotPiece& p = pieces[i];
+      GridSegment s;
+      if (!snap(p.a.x, grid, s.a.x) || !snap(p.a.y, grid, s.a.y) || !snap(p.b.x, grid, s.b.x) ||
+          !snap(p.b.y, grid, s.b.y) || s.a == s.b) {
+        ++part.dropped;
+        continue;
+      }
+      const Key key{p.pen, static_cast<int>(p.layer), p.level};
+      if (part.runs.empty() || part.runs.back().key != key) part.runs.push_back({key, {}});
+      part.runs.back().segments.push_back(s);
     }
-    const Key key{p.pen, static_cast<int>(p.layer), p.level};
-    if (key != last_key) {
-      auto [it, inserted] = index.try_emplace(key, groups.size());
-      if (inserted) groups.push_back(Group{p.pen, p.layer, p.level, {}, {}});
-      last_key = key;
-      last_group = it->second;
-    }
-    groups[last_group].segments.push_back(s);
+    parts[k] = std::move(part);
+  });
+  std::map<Key, std::size_t> sizes;
+  for (const Part& part : parts) {
+    dropped += part.dropped;
+    for (const Run& run : part.runs) sizes[run.key] += run.segments.size();
   }
-  std::vector<Group> ordered;
-  ordered.reserve(groups.size());
-  for (const auto& [key, i] : index) ordered.push_back(std::move(groups[i]));
-  return ordered;
+  std::vector<Group> groups;
+  groups.reserve(sizes.size());
+  std::map<Key, std::size_t> index;
+  for (const auto& [key, size] : sizes) {
+    index.emplace(key, groups.size());
+    groups.push_back(
+        Group{std::get<0>(key), static_cast<StrokeLayer>(std::get<1>(key)), std::get<2>(key), {}, {}});
+    groups.back().segments.reserve(size);
+  }
+  for (Part& part : parts)
+    for (Run& run : part.runs) {
+      std::vector<GridSegment>& to = groups[index.at(run.key)].segments;
+      to.insert(to.end(), run.segments.begin(), run.segments.end());
+      std::vector<GridSegment>().swap(run.segments);
+    }
+  return groups;
 }
 
 // A planned group: strokes as graph vertex lists.
@@ -228,8 +257,8 @@ PenPlan plan_pen_strokes(const std::vector<PlotPiece>& pieces, const PlanOptions
   PenPlan plan;
   PlanStats& st = plan.stats;
   st.pieces = pieces.size();
-  std::vector<Group> groups = snap_groups(pieces, grid, st.dropped_pieces);
   const unsigned threads = options.threads >= 2 ? 0 : 1;  // 0: parts as tasks of the caller's arena
+  std::vector<Group> groups = snap_groups(pieces, grid, threads, st.dropped_pieces);
   for (Group& g : groups) {
     g.graph = plan::build_pen_graph(g.segments, options.merge_tolerance_grid, threads);
     st.merged_pieces += g.graph.edges.size();
