@@ -4,7 +4,7 @@
 set -euo pipefail
 packages=(
   build-essential cmake ninja-build pkg-config
-  libcairo2-dev libpng-dev nlohmann-json3-dev tao-pegtl-dev libboost-program-options-dev libtbb-dev zlib1g-dev libedit-dev
+  libcairo2-dev libpng-dev nlohmann-json3-dev tao-pegtl-dev libboost-program-options-dev libtbb-dev zlib1g-dev libdeflate-dev libedit-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   libhersheyfont-dev hershey-fonts-data libunistring-dev libgmp-dev libcgal-dev scdoc
   poppler-utils hp2xx librsvg2-bin inkscape tmux parallel python3-ezdxf

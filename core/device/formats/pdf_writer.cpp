@@ -1,13 +1,15 @@
 #include "core/device/formats/pdf_writer.hpp"
 
-#include <zlib.h>
+#include <libdeflate.h>
+#include <tbb/enumerable_thread_specific.h>
 
-#include <charconv>
 #include <cmath>
 #include <ctime>
+#include <memory>
 #include <stdexcept>
 #include <string_view>
 
+#include "core/device/formats/fixed_decimal.hpp"
 #include "core/device/page/atomic_file.hpp"
 #include "core/device/page/page_layout.hpp"
 #include "core/device/page/page_style.hpp"
@@ -23,20 +25,7 @@ namespace {
 constexpr std::size_t kCatalog = 1, kPages = 2, kFont = 3, kInfo = 4, kFirstPageObject = 5;
 
 // A number in a content stream: fixed point, `decimals` digits, trailing zeros dropped.
-void put_number(std::string& out, double v, int decimals = 3) {
-  char buf[64];
-  const auto r = std::to_chars(buf, buf + sizeof buf, v, std::chars_format::fixed, decimals);
-  char* end = r.ptr;
-  if (decimals > 0) {
-    while (end[-1] == '0') --end;
-    if (end[-1] == '.') --end;
-  }
-  if (end - buf == 2 && buf[0] == '-' && buf[1] == '0') {  // -0
-    out += '0';
-    return;
-  }
-  out.append(buf, end);
-}
+void put_number(std::string& out, double v, int decimals = 3) { append_fixed(out, v, decimals); }
 
 void put_point(std::string& out, Point2 p, const char* op) {
   put_number(out, p.x);
@@ -124,23 +113,29 @@ std::string pdf_date(const std::string& iso) {
   return "D:" + digits.substr(0, 14) + "Z";
 }
 
-// zlib's level 4: measured on the CGAL bunny's page (618 kB of operators) it takes 7.5 ms where the default
-// level 6 takes 31 ms — a sixth of the whole run — for a file 8 % larger (150 kB against 139 kB); on
-// fandisk's, 1.6 ms against 6.5 ms for 7 %. Level 1 gains little more time and costs 30 %.
-constexpr int kPageCompression = 4;
+// libdeflate's level 2: on the 10⁶-triangle torus's page (5.8 MB of operators) it takes 30 ms on one core
+// where zlib's level 4, used before, took 61 ms, for a file 1 % larger (1.298 against 1.285 MB); on the
+// bunny's (509 kB), 2.8 ms against 4.8 ms for the same size. Its level 1 halves that time again for a file
+// 6 % larger; zlib's level 6 (its default) takes thrice level 4's time for 8 % less.
+constexpr int kPageCompression = 2;
 // A page's operators are compressed in parts of about this size, each a content stream of its own, on all
-// cores. Parts this small share out evenly: the bunny's page (618 kB) in ten, where three parts of 256 kB
-// kept one core busy twice as long as the other, and fandisk's (200 kB) in four, where it was one. The
-// parts depend on the text alone, not on the cores, so the bytes do not either; each costs its
-// dictionary's warm-up (the bunny's file 1 % larger).
+// cores. Parts this small share out evenly: the bunny's page in eight, where three parts of 256 kB kept one
+// core busy twice as long as the other, and fandisk's in four, where it was one. The parts depend on the
+// text alone, not on the cores, so the bytes do not either; each costs its dictionary's warm-up (the
+// bunny's file 1 % larger).
 constexpr std::size_t kContentPartBytes = 64 * 1024;
 
-std::string deflate(std::string_view text) {
-  uLongf size = compressBound(static_cast<uLong>(text.size()));
-  std::string out(size, '\0');
-  if (compress2(reinterpret_cast<Bytef*>(out.data()), &size, reinterpret_cast<const Bytef*>(text.data()),
-                static_cast<uLong>(text.size()), kPageCompression) != Z_OK)
-    throw DeviceError("cannot compress a PDF page");
+struct FreeCompressor {
+  void operator()(libdeflate_compressor* c) const { libdeflate_free_compressor(c); }
+};
+using Compressor = std::unique_ptr<libdeflate_compressor, FreeCompressor>;
+
+// `text` in the zlib format, which FlateDecode reads.
+std::string deflate(libdeflate_compressor& compressor, std::string_view text) {
+  std::string out(libdeflate_zlib_compress_bound(&compressor, text.size()), '\0');
+  const std::size_t size =
+      libdeflate_zlib_compress(&compressor, text.data(), text.size(), out.data(), out.size());
+  if (size == 0) throw DeviceError("cannot compress a PDF page");
   out.resize(size);
   return out;
 }
@@ -157,9 +152,13 @@ std::vector<std::string> deflate_in_parts(const std::string& text) {
   }
   ends.push_back(text.size());
   std::vector<std::string> parts(ends.size());
+  tbb::enumerable_thread_specific<Compressor> compressors(
+      [] { return Compressor(libdeflate_alloc_compressor(kPageCompression)); });  // one a thread
   parallel_chunks(parts.size(), 0, [&](std::size_t k) {
+    Compressor& compressor = compressors.local();
+    if (!compressor) throw DeviceError("cannot compress a PDF page: out of memory");
     const std::size_t begin = k == 0 ? 0 : ends[k - 1];
-    parts[k] = deflate(std::string_view(text).substr(begin, ends[k] - begin));
+    parts[k] = deflate(*compressor, std::string_view(text).substr(begin, ends[k] - begin));
   });
   return parts;
 }
