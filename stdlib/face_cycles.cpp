@@ -24,10 +24,19 @@ void canonical_cycle(const std::vector<std::uint32_t>& ring, std::vector<std::ui
   for (std::size_t k = 0, i = m; k < n; ++k, i = step(i, forward)) out.push_back(ring[i]);
 }
 
-std::uint64_t cycle_hash(const std::vector<std::uint32_t>& cycle) {
+std::uint64_t cycle_hash(std::span<const std::uint32_t> cycle) {
   std::uint64_t h = cycle.size() * 0x9E3779B97F4A7C15ull;
   for (std::uint32_t v : cycle) h = (h ^ v) * 0xBF58476D1CE4E5B9ull, h ^= h >> 31;
   return h;
+}
+
+std::uint64_t triangle_cycle_hash(std::uint32_t a, std::uint32_t b, std::uint32_t c) {
+  // From the smallest vertex, towards the smaller of its two neighbours (they differ).
+  const std::uint32_t ring[3] = {a, b, c};
+  const int m = a < b ? (a < c ? 0 : 2) : (b < c ? 1 : 2);
+  const std::uint32_t next = ring[(m + 1) % 3], previous = ring[(m + 2) % 3];
+  const std::uint32_t cycle[3] = {ring[m], std::min(next, previous), std::max(next, previous)};
+  return cycle_hash(cycle);
 }
 
 FaceCycleSet::FaceCycleSet(std::size_t expected)

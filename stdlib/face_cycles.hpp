@@ -15,7 +15,11 @@ namespace hlr::stdlib::mesh_detail {
 void canonical_cycle(const std::vector<std::uint32_t>& ring, std::vector<std::uint32_t>& out);
 
 // A hash of a canonical cycle.
-std::uint64_t cycle_hash(const std::vector<std::uint32_t>& cycle);
+std::uint64_t cycle_hash(std::span<const std::uint32_t> cycle);
+
+// cycle_hash of the canonical cycle of a triangle of three distinct vertices, without vectors: most faces
+// of a scan are such.
+std::uint64_t triangle_cycle_hash(std::uint32_t a, std::uint32_t b, std::uint32_t c);
 
 // Faces by the hash of their cycle of vertices. A slot holds 8 bytes (the hash's top half as a
 // fingerprint, the face), so the table of a large mesh stays in cache; open addressing, like

@@ -17,29 +17,12 @@
 #include "core/tolerance.hpp"
 #include "stdlib/face_cycles.hpp"
 #include "stdlib/mesh_detail.hpp"
+#include "stdlib/mesh_warnings.hpp"
 
 namespace hlr::stdlib::mesh_detail {
 
-// ---- ExactPointIndex -------------------------------------------------------------------------------------
-
-ExactPointIndex::ExactPointIndex(std::size_t expected)
-    : slots_(std::bit_ceil(std::max<std::size_t>(16, 2 * expected)), Slot{0, kEmpty}) {}
-
-ExactPointIndex::Key ExactPointIndex::key_of(Point3 p) {
-  return {std::bit_cast<std::uint64_t>(p.x + 0.0), std::bit_cast<std::uint64_t>(p.y + 0.0),
-          std::bit_cast<std::uint64_t>(p.z + 0.0)};  // -0 + 0 = +0
-}
-
-std::uint64_t ExactPointIndex::hash_of(const Key& key) {
-  std::uint64_t h = key[0] * 0x9E3779B97F4A7C15ull;
-  h = (h ^ (h >> 29) ^ key[1]) * 0xBF58476D1CE4E5B9ull;
-  h = (h ^ (h >> 32) ^ key[2]) * 0x94D049BB133111EBull;
-  return h ^ (h >> 31);
-}
-
 namespace {
 
-constexpr std::size_t kWarningsPerKind = 10;
 // Total work allowed for ear clipping in one import (vertex visits): plenty for real data, a bound for
 // adversarial files with huge non-planar polygons.
 constexpr std::int64_t kTriangulationBudget = 400'000'000;
@@ -49,35 +32,6 @@ enum class TagKind : std::int64_t { Vertex = 1, Face = 2, Line = 3 };
 std::int64_t make_tag(TagKind kind, std::size_t index) {
   return (static_cast<std::int64_t>(kind) << 40) | static_cast<std::int64_t>(index);
 }
-
-// Warnings in the order found, at most kWarningsPerKind of each kind, then one line with the rest.
-class Warnings {
- public:
-  void add(const std::string& kind, MeshProblem problem) {
-    auto [it, fresh] = counts_.try_emplace(kind, 0);
-    if (fresh) order_.push_back(kind);
-    if (++it->second <= kWarningsPerKind) {
-      problems_.push_back(std::move(problem));
-      if (it->second == 1) file_of_[kind] = problems_.back().file;
-    }
-  }
-  std::vector<MeshProblem> finish() {
-    for (const std::string& kind : order_) {
-      const std::size_t n = counts_[kind];
-      if (n > kWarningsPerKind)
-        problems_.push_back(
-            {file_of_[kind], 0, 0,
-             std::to_string(n - kWarningsPerKind) + " more warnings of this kind [" + kind + "]", ""});
-    }
-    return std::move(problems_);
-  }
-
- private:
-  std::vector<MeshProblem> problems_;
-  std::map<std::string, std::size_t> counts_;
-  std::map<std::string, std::string> file_of_;
-  std::vector<std::string> order_;
-};
 
 class Builder {
  public:
@@ -100,6 +54,16 @@ class Builder {
     parallel_chunks((n + kPartFaces - 1) / kPartFaces, threads_for(n, 2 * kPartFaces, 0), [&](std::size_t k) {
       std::vector<std::uint32_t> ring, scratch, key;
       for (std::size_t f = k * kPartFaces; f < std::min(n, (k + 1) * kPartFaces); ++f) {
+        if (const std::span<const std::uint32_t> face = raw_.face(f); face.size() == 3) {
+          // A triangle, as below without its vectors: three distinct vertices, some area.
+          const std::uint32_t t[3] = {canon_[face[0]], canon_[face[1]], canon_[face[2]]};
+          Vector3 normal;
+          double size = 0;
+          if (t[0] == t[1] || t[1] == t[2] || t[2] == t[0] || is_zero_area(t, normal, size)) continue;
+          plain[f] = 1;
+          hashes[f] = triangle_cycle_hash(t[0], t[1], t[2]);
+          continue;
+        }
         std::uint32_t repeated_vertex = 0;
         if (clean_ring(f, ring, repeated_vertex) || ring.size() < 3) continue;
         const FaceShape shape = shape_of(ring, scratch);
@@ -218,6 +182,21 @@ class Builder {
     return repeated;
   }
 
+  // Whether a ring of distinct vertices has no area to speak of, with its Newell normal (its length is twice
+  // the area) and its box's diagonal. The builder's zero-area floor is kRelative · size²; dropping up to 4×
+  // that keeps us clear of it.
+  bool is_zero_area(std::span<const std::uint32_t> ring, Vector3& normal, double& size) const {
+    const std::vector<Point3>& pos = positions_;
+    normal = newell_normal(pos, ring);
+    Point3 lo = pos[ring[0]], hi = lo;
+    for (std::uint32_t v : ring) {
+      lo = {std::min(lo.x, pos[v].x), std::min(lo.y, pos[v].y), std::min(lo.z, pos[v].z)};
+      hi = {std::max(hi.x, pos[v].x), std::max(hi.y, pos[v].y), std::max(hi.z, pos[v].z)};
+    }
+    size = distance(lo, hi);
+    return !(length(normal) > 4 * Tolerance::kRelative * std::max(size, Tolerance::kFloor) * size);
+  }
+
   // What the per-face repairs look at: distinct vertices, then (with three or more) area and flatness.
   struct FaceShape {
     std::size_t distinct = 0;
@@ -238,16 +217,8 @@ class Builder {
     }
     if (shape.distinct < 3) return shape;
     const std::vector<Point3>& pos = positions_;
-    shape.normal = newell_normal(pos, std::span<const std::uint32_t>(ring));
-    Point3 lo = pos[ring[0]], hi = lo;
-    for (std::uint32_t v : ring) {
-      lo = {std::min(lo.x, pos[v].x), std::min(lo.y, pos[v].y), std::min(lo.z, pos[v].z)};
-      hi = {std::max(hi.x, pos[v].x), std::max(hi.y, pos[v].y), std::max(hi.z, pos[v].z)};
-    }
-    const double size = distance(lo, hi);
-    // The builder's zero-area floor is kRelative · size²; dropping up to 4× that keeps us clear of it.
-    shape.zero_area =
-        !(length(shape.normal) > 4 * Tolerance::kRelative * std::max(size, Tolerance::kFloor) * size);
+    double size = 0;
+    shape.zero_area = is_zero_area(ring, shape.normal, size);
     // Half the builder's planarity tolerance, so no face we pass on can fail its check. A triangle is
     // planar; rings with bridges (a vertex twice) go to the builder as loops.
     if (shape.zero_area || ring.size() <= 3 || shape.distinct != ring.size()) return shape;

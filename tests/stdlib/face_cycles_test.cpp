@@ -36,6 +36,23 @@ TEST(FaceCycles, CanonicalFormOfEveryRotationAndDirection) {
   EXPECT_NE(canonical({1, 2, 3, 4}), canonical({1, 3, 2, 4}));  // the same vertices, another cycle
 }
 
+// The triangles' shortcut hashes what the general path does: the canonical cycle's hash, for every order
+// of three distinct vertices (the two directions of a triangle are one cycle).
+TEST(FaceCycles, TriangleHashIsTheCanonicalCyclesHash) {
+  std::mt19937 rng(4242);
+  std::uniform_int_distribution<std::uint32_t> vertex(0, 1000);
+  for (int i = 0; i < 2000; ++i) {
+    std::vector<std::uint32_t> t = {vertex(rng), vertex(rng), vertex(rng)};
+    if (t[0] == t[1] || t[1] == t[2] || t[2] == t[0]) continue;
+    const std::uint64_t expected = cycle_hash(canonical(t));
+    std::sort(t.begin(), t.end());
+    do {
+      ASSERT_EQ(triangle_cycle_hash(t[0], t[1], t[2]), expected) << t[0] << " " << t[1] << " " << t[2];
+    } while (std::next_permutation(t.begin(), t.end()));
+  }
+  EXPECT_NE(triangle_cycle_hash(1, 2, 3), triangle_cycle_hash(1, 2, 4));
+}
+
 // Random faces of 3–6 vertices out of a few hundred, their canonical cycles counted in a map.
 struct Faces {
   std::vector<std::vector<std::uint32_t>> rings;
