@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <limits>
 
+#include "core/first_touch.hpp"
 #include "core/parallel.hpp"
 #include "stdlib/mesh_detail.hpp"
 
@@ -101,7 +102,8 @@ bool read_off_fast(std::string_view text, const std::string& name, const MeshImp
   raw = RawMesh{};
   raw.files = {name};
   raw.vertex_base = 0;
-  raw.vertices.resize(n_vertices);  // backed by data: the records are there
+  // Backed by data (the records are there), and faulted in on every core before the parts fill it.
+  resize_touched(raw.vertices, n_vertices, threads);
   parallel_chunks(parts.size(), threads, [&](std::size_t k) {
     Part& part = read[k];
     // Read into locals, stored once: the parts lie side by side, their ends sharing cache lines.
@@ -139,9 +141,9 @@ bool read_off_fast(std::string_view text, const std::string& name, const MeshImp
     reference_at[k + 1] = reference_at[k] + read[k].faces.face_vertices.size();
     face_at[k + 1] = face_at[k] + read[k].faces.face_count();
   }
-  raw.face_vertices.resize(reference_at.back());
-  raw.face_ends.resize(face_at.back());
-  raw.face_sources.resize(face_at.back());
+  resize_touched(raw.face_vertices, reference_at.back(), threads);
+  resize_touched(raw.face_ends, face_at.back(), threads);
+  resize_touched(raw.face_sources, face_at.back(), threads);
   parallel_chunks(read.size(), threads, [&](std::size_t k) {
     const RawMesh& faces = read[k].faces;
     std::copy(faces.face_vertices.begin(), faces.face_vertices.end(),

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "core/first_touch.hpp"
 #include "core/parallel.hpp"
 #include "core/solid/builder_detail.hpp"
 
@@ -305,9 +306,10 @@ void build_edge_table(Solid& solid, EdgeEntries& edges, const std::vector<bool>&
     for (std::uint32_t i = 0, next = 0; i < n; ++i)
       if (kept(edges[i])) index_of[i] = next++;
   }
-  solid.edges.resize(count);
   constexpr std::size_t kPart = 8192;
-  parallel_chunks((n + kPart - 1) / kPart, threads_for(n, 4 * kPart, 0), [&](std::size_t k) {
+  const unsigned threads = threads_for(n, 4 * kPart, 0);
+  resize_touched(solid.edges, count, threads);  // faulted in on every core first
+  parallel_chunks((n + kPart - 1) / kPart, threads, [&](std::size_t k) {
     for (std::uint32_t i = static_cast<std::uint32_t>(k * kPart);
          i < std::min<std::size_t>(n, (k + 1) * kPart); ++i) {
       const EdgeEntry& entry = edges[i];
