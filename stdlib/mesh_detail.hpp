@@ -5,6 +5,7 @@
 
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <string>
 #include <string_view>
@@ -176,6 +177,11 @@ void order_faces_by_least_vertex(std::span<const std::uint32_t> vertices, std::s
 
 // A token for messages: quoted, non-printable bytes escaped, long tokens shortened.
 std::string quoted(std::string_view token);
+
+// The first `size` bytes of the open file `fd`, read by parts of 4 MB side by side (import_mesh, files of
+// 16 MB or more). Nothing when a part cannot be read or the file's size is not `size`: the caller then
+// reads it one part after the other.
+std::optional<std::string> read_in_parts(int fd, std::size_t size);
 
 // ---- text scanning ---------------------------------------------------------------------------------------
 

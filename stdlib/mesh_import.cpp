@@ -2,13 +2,18 @@
 // extension and, for Albers' pairs, finds the partner file beside it.
 #include "stdlib/mesh_import.hpp"
 
+#include <unistd.h>
+
 #include <algorithm>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
 #include <memory>
 #include <optional>
+#include <vector>
 
+#include "core/first_touch.hpp"
+#include "core/parallel.hpp"
 #include "core/release_memory.hpp"
 #include "stdlib/mesh_detail.hpp"
 
@@ -29,6 +34,33 @@ std::string MeshProblem::to_string() const {
 }
 
 MeshImportError::MeshImportError(MeshProblem p) : std::runtime_error(p.to_string()), problem(std::move(p)) {}
+
+// Its pages are faulted in on every core first: the 10⁶-triangle torus's 37 MB took 35 ms on one core.
+std::optional<std::string> mesh_detail::read_in_parts(int fd, std::size_t size) {
+  constexpr std::size_t kPartBytes = std::size_t{4} << 20;
+  std::string data;
+  data.reserve(size);
+  touch_pages(data.data(), size, 0);
+  data.resize(size);
+  const std::size_t parts = (size + kPartBytes - 1) / kPartBytes;
+  std::vector<char> read(parts, 0);
+  parallel_chunks(parts, 0, [&](std::size_t k) {
+    std::size_t at = k * kPartBytes;
+    const std::size_t end = std::min(size, at + kPartBytes);
+    while (at < end) {
+      const ssize_t got = ::pread(fd, data.data() + at, end - at, static_cast<off_t>(at));
+      if (got < 0 && errno == EINTR) continue;
+      if (got <= 0) return;  // an error, or the file is shorter now
+      at += static_cast<std::size_t>(got);
+    }
+    read[k] = 1;
+  });
+  char past = 0;
+  if (std::find(read.begin(), read.end(), 0) != read.end() ||
+      ::pread(fd, &past, 1, static_cast<off_t>(size)) != 0)
+    return std::nullopt;  // longer now, or unreadable there
+  return data;
+}
 
 namespace {
 
@@ -60,6 +92,11 @@ std::string read_file(const fs::path& path, const std::string& name, std::uint64
          "simplify the mesh");
   };
   if (!ec && expected > max_bytes) too_large(std::to_string(expected));  // before any allocation
+  constexpr std::uintmax_t kReadInPartsFrom = std::uintmax_t{16} << 20;
+  if (!ec && expected >= kReadInPartsFrom)
+    if (std::optional<std::string> whole =
+            mesh_detail::read_in_parts(::fileno(file.get()), static_cast<std::size_t>(expected)))
+      return std::move(*whole);
   std::string data;
   // One more byte than expected, so that a read reaching it shows the file grew meanwhile.
   data.resize(ec ? std::size_t{1} << 16 : static_cast<std::size_t>(expected) + 1);

@@ -3,6 +3,7 @@
 // text), and byte mutations of valid files that must either import or throw MeshImportError.
 #include "stdlib/mesh_import.hpp"
 
+#include <fcntl.h>
 #include <gtest/gtest.h>
 #include <unistd.h>
 
@@ -14,6 +15,7 @@
 #include <fstream>
 #include <functional>
 #include <map>
+#include <optional>
 #include <random>
 #include <string>
 #include <vector>
@@ -624,6 +626,42 @@ TEST_F(MeshImportFiles, UnreadableFilesReportTheReason) {
   }
   const MeshProblem e = error_of([&] { import_mesh(write("e.off", "")); });
   EXPECT_EQ(e.to_string(), (dir_ / "e.off").string() + ": the file is empty; hint: " + e.hint);
+}
+
+// A file of 16 MB or more is read by parts of 4 MB side by side. A cube followed by 900 000 vertices no
+// face uses, each line its own: a byte out of place breaks a line, and with it the vertex count.
+TEST_F(MeshImportFiles, LargeFilesReadByPartsReadAsTheirText) {
+  constexpr std::size_t kExtra = 900'000;
+  std::string large = "OFF\n" + std::to_string(kCubeVertices.size() + kExtra) + " " +
+                      std::to_string(kCubeFaces.size()) + " 0\n";
+  for (const std::string& v : kCubeVertices) large += v + "\n";
+  for (std::size_t i = 0; i < kExtra; ++i)
+    large += std::to_string(i) + ".5 -" + std::to_string(i % 977) + ".25 " + std::to_string(i % 13) + "\n";
+  for (const std::string& f : kCubeFaces) large += f + "\n";
+  ASSERT_GT(large.size(), std::size_t{16} << 20);
+  const ImportedMesh read = import_mesh(write("large.off", large));
+  const ImportedMesh cube = import_mesh(write("cube.off", off(kCubeVertices, kCubeFaces)));
+  expect_shape(read, 8, 6, 12, true);
+  EXPECT_EQ(read.solid.vertices, cube.solid.vertices);
+  ASSERT_EQ(read.warnings.size(), 1u);
+  EXPECT_NE(read.warnings[0].message.find("and 899999 other vertices are used by no face"), std::string::npos)
+      << read.warnings[0].message;
+}
+
+// Every byte in its place, whichever part read it; a file longer or shorter than the size asked for is
+// not taken.
+TEST_F(MeshImportFiles, ReadInPartsReadsEveryByteInPlace) {
+  std::string bytes((std::size_t{9} << 20) + 12345, '\0');
+  for (std::size_t i = 0; i < bytes.size(); ++i) bytes[i] = static_cast<char>((i * 2654435761u) >> 13);
+  const fs::path file = write("bytes.bin", bytes);
+  const int fd = ::open(file.c_str(), O_RDONLY);
+  ASSERT_GE(fd, 0);
+  const std::optional<std::string> read = mesh_detail::read_in_parts(fd, bytes.size());
+  ASSERT_TRUE(read.has_value());
+  EXPECT_TRUE(*read == bytes);
+  EXPECT_FALSE(mesh_detail::read_in_parts(fd, bytes.size() - 1).has_value());  // the file is longer
+  EXPECT_FALSE(mesh_detail::read_in_parts(fd, bytes.size() + 1).has_value());  // the file is shorter
+  ::close(fd);
 }
 
 // Found by fuzzing (a script importing a sparse file): the buffer was sized from the file's claimed size,
