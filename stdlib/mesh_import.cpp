@@ -43,7 +43,7 @@ std::optional<std::string> mesh_detail::read_in_parts(int fd, std::size_t size) 
   touch_pages(data.data(), size, 0);
   data.resize(size);
   const std::size_t parts = (size + kPartBytes - 1) / kPartBytes;
-  std::vector<char> read(parts, 0);
+  std::vector<char> complete(parts, 0);
   parallel_chunks(parts, 0, [&](std::size_t k) {
     std::size_t at = k * kPartBytes;
     const std::size_t end = std::min(size, at + kPartBytes);
@@ -53,10 +53,10 @@ std::optional<std::string> mesh_detail::read_in_parts(int fd, std::size_t size) 
       if (got <= 0) return;  // an error, or the file is shorter now
       at += static_cast<std::size_t>(got);
     }
-    read[k] = 1;
+    complete[k] = 1;
   });
   char past = 0;
-  if (std::find(read.begin(), read.end(), 0) != read.end() ||
+  if (std::find(complete.begin(), complete.end(), 0) != complete.end() ||
       ::pread(fd, &past, 1, static_cast<off_t>(size)) != 0)
     return std::nullopt;  // longer now, or unreadable there
   return data;

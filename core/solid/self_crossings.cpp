@@ -76,7 +76,7 @@ class Finder {
     constexpr std::size_t kChunk = 8192;
     const unsigned threads = threads_for(n, 2 * kChunk, 0);
     // Faulted in on every core before they are filled (core/first_touch.hpp): a 10⁶-triangle mesh's take
-    // 48 MB here and 100 MB more in grid_pairs().
+    // 48 MB here and 64 MB more in grid_pairs().
     resize_touched(info_, n, threads);
     resize_touched(warp_, n, threads);
     parallel_chunks((n + kChunk - 1) / kChunk, threads, [&](std::size_t k) {

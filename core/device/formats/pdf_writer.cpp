@@ -119,10 +119,9 @@ std::string pdf_date(const std::string& iso) {
 // 6 % larger; zlib's level 6 (its default) takes thrice level 4's time for 8 % less.
 constexpr int kPageCompression = 2;
 // A page's operators are compressed in parts of about this size, each a content stream of its own, on all
-// cores. Parts this small share out evenly: the bunny's page in eight, where three parts of 256 kB kept one
-// core busy twice as long as the other, and fandisk's in four, where it was one. The parts depend on the
-// text alone, not on the cores, so the bytes do not either; each costs its dictionary's warm-up (the
-// bunny's file 1 % larger).
+// cores. Parts this small share out evenly: the bunny's page (509 kB) in eight, where three parts of 256 kB
+// kept one core busy twice as long as the other. The parts depend on the text alone, not on the cores, so
+// the bytes do not either; each costs its dictionary's warm-up (the bunny's file 1 % larger).
 constexpr std::size_t kContentPartBytes = 64 * 1024;
 
 struct FreeCompressor {
