@@ -77,23 +77,23 @@ std::vector<Group> snap_groups(const std::vector<PlotPiece>& pieces, double grid
     }
     parts[k] = std::move(part);
   });
-  std::map<Key, std::size_t> sizes;
+  // Each group's size, then, in the same map, its place among the groups in key order.
+  std::map<Key, std::size_t> place;
   for (const Part& part : parts) {
     dropped += part.dropped;
-    for (const Run& run : part.runs) sizes[run.key] += run.segments.size();
+    for (const Run& run : part.runs) place[run.key] += run.segments.size();
   }
   std::vector<Group> groups;
-  groups.reserve(sizes.size());
-  std::map<Key, std::size_t> index;
-  for (const auto& [key, size] : sizes) {
-    index.emplace(key, groups.size());
+  groups.reserve(place.size());
+  for (auto& [key, size_then_place] : place) {
     groups.push_back(
         Group{std::get<0>(key), static_cast<StrokeLayer>(std::get<1>(key)), std::get<2>(key), {}, {}});
-    groups.back().segments.reserve(size);
+    groups.back().segments.reserve(size_then_place);
+    size_then_place = groups.size() - 1;
   }
   for (Part& part : parts)
     for (Run& run : part.runs) {
-      std::vector<GridSegment>& to = groups[index.at(run.key)].segments;
+      std::vector<GridSegment>& to = groups[place.at(run.key)].segments;
       to.insert(to.end(), run.segments.begin(), run.segments.end());
       std::vector<GridSegment>().swap(run.segments);
     }

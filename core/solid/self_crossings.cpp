@@ -257,8 +257,9 @@ class Finder {
     // order: the cell size only shares the work out, the pairs found are the same for any.
     constexpr std::size_t kPart = 16384;
     const std::size_t part_count = (n + kPart - 1) / kPart;
+    const unsigned threads = threads_for(n, 2 * kPart, 0);  // for the stages by parts below
     std::vector<Box3> part_box(part_count);
-    parallel_chunks(part_count, threads_for(n, 2 * kPart, 0), [&](std::size_t k) {
+    parallel_chunks(part_count, threads, [&](std::size_t k) {
       Box3 box;  // stored once: the parts' boxes share cache lines
       for (std::size_t f = k * kPart; f < std::min(n, (k + 1) * kPart); ++f) {
         const FaceInfo& b = info_[f];  // grown by the tolerance
@@ -290,9 +291,8 @@ class Finder {
     // The faces ranked by the cell their box begins in (z first): a slab's faces are then a run of ranks,
     // and a cell's lie near each other in cell_faces, where in a scan's own order they were spread over
     // the whole mesh and every one fetched from memory.
-    const unsigned touch_threads = threads_for(n, 2 * kPart, 0);
     std::vector<std::uint64_t> ranked;
-    resize_touched(ranked, n, touch_threads);
+    resize_touched(ranked, n, threads);
     parallel_indices(n, kPart, [&](std::size_t f) {
       const FaceInfo& c = info_[f];
       ranked[f] = cell_key(index(c.lo[0], all.lo.x), index(c.lo[1], all.lo.y), index(c.lo[2], all.lo.z))
@@ -307,9 +307,9 @@ class Finder {
     std::vector<FaceIndex> face_at;
     std::vector<FaceInfo> cell_faces;
     std::vector<Cells> cells;
-    resize_touched(face_at, n, touch_threads);
-    resize_touched(cell_faces, n, touch_threads);
-    resize_touched(cells, n, touch_threads);
+    resize_touched(face_at, n, threads);
+    resize_touched(cell_faces, n, threads);
+    resize_touched(cells, n, threads);
     constexpr std::size_t kRanks = 8192;
     parallel_indices(n, kRanks, [&](std::size_t r) {
       face_at[r] = face_of(ranked[r]);
@@ -326,7 +326,7 @@ class Finder {
     // another face's box spans: by parts side by side, joined in order.
     std::vector<std::vector<FaceIndex>> part_big(part_count);
     std::vector<int> part_reach(part_count, 0);
-    parallel_chunks(part_count, threads_for(n, 2 * kPart, 0), [&](std::size_t k) {
+    parallel_chunks(part_count, threads, [&](std::size_t k) {
       std::vector<FaceIndex> found;  // stored once: the parts' results share cache lines
       int reach = 0;
       for (std::size_t r = k * kPart; r < std::min(n, (k + 1) * kPart); ++r) {

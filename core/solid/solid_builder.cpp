@@ -238,16 +238,16 @@ SolidBuildResult SolidBuilder::build() const {
   // stay empty; they always come with an error).
   const std::size_t n = face_ends_.size();
   const Tags face_tags{face_tags_};
+  const unsigned threads = threads_for(n, 4096, 0);  // for the stages by parts below
   // The faces' lists are faulted in on every core before they are filled (core/first_touch.hpp): a
   // 10⁶-triangle mesh's take 140 MB.
-  const unsigned touch_threads = threads_for(n, 4096, 0);
   Solid solid;
-  resize_touched(solid.faces, n, touch_threads);
-  resize_touched(solid.planes, n, touch_threads);
+  resize_touched(solid.faces, n, threads);
+  resize_touched(solid.planes, n, threads);
   std::vector<char> ready(n, 0);  // valid; chars, so that chunks may write side by side
   std::vector<char> plain(n, 1);  // its rings are its cleaned loops and it has no on-face lines
   std::vector<Vector3> areas;
-  resize_touched(areas, n, touch_threads);
+  resize_touched(areas, n, threads);
   std::vector<double> sizes(lines_.empty() ? 0 : n);  // only add_line needs them
   struct Chunk {
     std::vector<SolidDiagnostic> diagnostics;
@@ -258,7 +258,7 @@ SolidBuildResult SolidBuilder::build() const {
   };
   constexpr std::size_t kChunkFaces = 2048;
   std::vector<Chunk> chunks((n + kChunkFaces - 1) / kChunkFaces);
-  parallel_chunks(chunks.size(), threads_for(n, 4096, 0), [&](std::size_t k) {
+  parallel_chunks(chunks.size(), threads, [&](std::size_t k) {
     Chunk& chunk = chunks[k];
     Diagnostics found(chunk.diagnostics);
     FaceWork work;
@@ -318,7 +318,7 @@ SolidBuildResult SolidBuilder::build() const {
   };
   tbb::task_group twins;
   auto start_twins = [&] {
-    if (threads_for(n, 4096, 0) == 1)
+    if (threads == 1)
       find_twins();
     else
       twins.run(find_twins);
